@@ -1,0 +1,139 @@
+/* advance.c — single steps and sub-cycled advance with stability bound, divergence check and rollback. */
+#include "integrator.h"
+
+#include <math.h>
+
+canopy_status canopy_model_frequency_bound(canopy_model *model, double *omega)
+{
+    if (model == NULL || omega == NULL) return CANOPY_ERR_ARGUMENT;
+    canopy_status st = canopy_model_prepare(model);
+    if (st != CANOPY_OK) return st;
+    const canopy_nodes *n = &model->nodes;
+    const canopy_springs *s = &model->springs;
+    /* Per-node sums of stiffness and dashpot, in work[0] (x: K, y: C). */
+    double *sum = model->work[0];
+    for (int i = 0; i < 3 * n->count; ++i) sum[i] = 0.0;
+    for (int k = 0; k < s->count; ++k) {
+        const int i = s->ends[2 * k], j = s->ends[2 * k + 1];
+        sum[3 * i] += s->k[k];     sum[3 * j] += s->k[k];
+        sum[3 * i + 1] += s->c[k]; sum[3 * j + 1] += s->c[k];
+    }
+    double lambda = 0.0;
+    for (int i = 0; i < n->count; ++i) {
+        if (n->fixed[i]) continue;
+        const double m = canopy_effective_mass(model, i);
+        const double w2 = 2.0 * sum[3 * i] / m;     /* seed 000 eq. 3.5 */
+        const double rho = 2.0 * sum[3 * i + 1] / m;
+        const double L = 0.5 * rho + sqrt(0.25 * rho * rho + w2);
+        if (L > lambda) lambda = L;
+    }
+    *omega = lambda;
+    canopy_clear_message(model);
+    return CANOPY_OK;
+}
+
+canopy_status canopy_model_stable_step(canopy_model *model, double *dt)
+{
+    if (model == NULL || dt == NULL) return CANOPY_ERR_ARGUMENT;
+    double omega;
+    canopy_status st = canopy_model_frequency_bound(model, &omega);
+    if (st != CANOPY_OK) return st;
+    *dt = omega > 0.0 ? model->max_omega_dt / omega : INFINITY;
+    return CANOPY_OK;
+}
+
+/* NaN/Inf or a node faster than the speed limit: returns the offending node,
+ * or -1 when the state is sound. */
+static int find_runaway(const canopy_model *m, double *speed)
+{
+    const canopy_nodes *n = &m->nodes;
+    const double lim2 = m->speed_limit * m->speed_limit;
+    for (int i = 0; i < n->count; ++i) {
+        const double *x = n->x + 3 * i, *v = n->v + 3 * i;
+        const double v2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+        if (!isfinite(x[0] + x[1] + x[2]) || !isfinite(v2) || v2 > lim2) {
+            *speed = sqrt(v2);
+            return i;
+        }
+    }
+    return -1;
+}
+
+/* One step without rollback (the caller saved the state). */
+static canopy_status raw_step(canopy_model *model, double dt, int substep)
+{
+    canopy_status st = model->integrator->step(model, dt);
+    if (st != CANOPY_OK) return st;
+    if (!model->integrator->carries_acceleration) model->acc_valid = 0;
+    model->t += dt;
+    double speed = 0.0;
+    int bad = find_runaway(model, &speed);
+    if (bad >= 0) {
+        if (isfinite(speed))
+            return canopy_fail(model, CANOPY_ERR_DIVERGED,
+                               "%s sub-step %d (dt %g): node %d speed %g m/s "
+                               "exceeds the limit %g m/s",
+                               model->integrator->name, substep, dt, bad, speed,
+                               model->speed_limit);
+        return canopy_fail(model, CANOPY_ERR_DIVERGED,
+                           "%s sub-step %d (dt %g): node %d position or "
+                           "velocity is not finite", model->integrator->name,
+                           substep, dt, bad);
+    }
+    return CANOPY_OK;
+}
+
+canopy_status canopy_model_step(canopy_model *model, double dt)
+{
+    if (model == NULL) return CANOPY_ERR_ARGUMENT;
+    if (!(dt > 0.0) || !isfinite(dt))
+        return canopy_fail(model, CANOPY_ERR_ARGUMENT,
+                           "step: dt %g must be finite and > 0", dt);
+    canopy_status st = canopy_model_prepare(model);
+    if (st != CANOPY_OK) return st;
+    if ((st = canopy_state_save(model, &model->rollback)) != CANOPY_OK)
+        return st;
+    st = raw_step(model, dt, 0);
+    if (st != CANOPY_OK) {
+        canopy_state_load(model, &model->rollback);
+        return st;
+    }
+    canopy_clear_message(model);
+    return CANOPY_OK;
+}
+
+canopy_status canopy_model_advance(canopy_model *model, double dt,
+                                   int *substeps_out)
+{
+    if (model == NULL) return CANOPY_ERR_ARGUMENT;
+    if (!(dt > 0.0) || !isfinite(dt))
+        return canopy_fail(model, CANOPY_ERR_ARGUMENT,
+                           "advance: dt %g must be finite and > 0", dt);
+    double h;
+    canopy_status st = canopy_model_stable_step(model, &h);
+    if (st != CANOPY_OK) return st;
+    /* Sub-steps rounded up; the relative slack keeps an exact multiple from
+     * gaining a spurious extra step through round-off. */
+    double ratio = dt / h;
+    if (ratio > 1e9)
+        return canopy_fail(model, CANOPY_ERR_ARGUMENT,
+                           "advance: dt %g needs %g sub-steps of %g (limit 1e9)",
+                           dt, ratio, h);
+    int n = (int)ceil(ratio * (1.0 - 1e-12));
+    if (n < 1) n = 1;
+    const double sub = dt / n;
+    if ((st = canopy_state_save(model, &model->rollback)) != CANOPY_OK)
+        return st;
+    const double t_end = model->t + dt;
+    for (int k = 0; k < n; ++k) {
+        st = raw_step(model, sub, k);
+        if (st != CANOPY_OK) {
+            canopy_state_load(model, &model->rollback);
+            return st;
+        }
+    }
+    model->t = t_end;
+    if (substeps_out) *substeps_out = n;
+    canopy_clear_message(model);
+    return CANOPY_OK;
+}

@@ -1,0 +1,225 @@
+/* integrator_newmark.c — implicit Newmark-beta (average acceleration) and HHT-alpha, Newton with matrix-free CG. */
+#include "integrator.h"
+
+#include <float.h>
+#include <math.h>
+
+/* HHT-alpha (Hilber, Hughes & Taylor 1977; seed 002 eq. 41) with
+ * alpha in [-1/3, 0], gamma = 1/2 - alpha, beta = (1 - alpha)^2 / 4:
+ *   M a_{n+1} = (1 + alpha) F(x_{n+1}, v_{n+1}) - alpha F(x_n, v_n),
+ *   x_{n+1} = x_n + dt v_n + dt^2 ((1/2 - beta) a_n + beta a_{n+1}),
+ *   v_{n+1} = v_n + dt ((1 - gamma) a_n + gamma a_{n+1})   (seed 002 eqs. 25-26).
+ * alpha = 0 is Newmark's average-acceleration rule (beta 1/4, gamma 1/2).
+ * The unknown dx = x_{n+1} - x_n is found by Newton's method on the residual
+ * above; each Newton correction solves
+ *   [M / (beta dt^2) + (1 + alpha)(K + gamma / (beta dt) C)] delta = -R
+ * with Jacobi-preconditioned conjugate gradients, K the tangent stiffness
+ * (compressive geometric terms dropped, so the matrix stays SPD: a
+ * quasi-Newton method whose fixed point is still the exact residual's). */
+
+typedef struct hht_coeffs {
+    double alpha, beta, gamma, dt;
+} hht_coeffs;
+
+static double dot_free(const canopy_model *m, const double *a, const double *b)
+{
+    double s = 0.0;
+    for (int i = 0; i < m->nodes.count; ++i) {
+        if (m->nodes.fixed[i]) continue;
+        s += a[3 * i] * b[3 * i] + a[3 * i + 1] * b[3 * i + 1] +
+             a[3 * i + 2] * b[3 * i + 2];
+    }
+    return s;
+}
+
+/* y = J u at positions x. tmp: scratch. */
+static void jacobian_apply(const canopy_model *m, const hht_coeffs *c,
+                           const double *x, const double *u, double *y,
+                           double *tmp)
+{
+    const int n = m->nodes.count;
+    canopy_tangent_stiffness(m, x, u, y, 1);
+    canopy_tangent_damping(m, x, u, tmp);
+    const double cd = c->gamma / (c->beta * c->dt);
+    const double cm = 1.0 / (c->beta * c->dt * c->dt);
+    for (int i = 0; i < n; ++i) {
+        if (m->nodes.fixed[i]) {
+            y[3 * i] = y[3 * i + 1] = y[3 * i + 2] = 0.0;
+            continue;
+        }
+        const double mi = canopy_effective_mass(m, i) * cm;
+        for (int d = 0; d < 3; ++d) {
+            const int k = 3 * i + d;
+            y[k] = mi * u[k] + (1.0 + c->alpha) * (y[k] + cd * tmp[k]);
+        }
+    }
+}
+
+/* Solve J delta = rhs by preconditioned CG to relative tolerance rtol.
+ * Returns the iterations used, or -1 if not converged. */
+static int cg_solve(canopy_model *m, const hht_coeffs *c, const double *x,
+                    const double *rhs, double *delta, const double *diag,
+                    double rtol)
+{
+    const int N = 3 * m->nodes.count;
+    double *r = m->work[8], *p = m->work[9], *Ap = m->work[10],
+           *z = m->work[11], *tmp = m->work[12];
+    for (int k = 0; k < N; ++k) {
+        delta[k] = 0.0;
+        r[k] = rhs[k];
+        z[k] = r[k] / diag[k];
+        p[k] = z[k];
+    }
+    const double r0 = sqrt(dot_free(m, r, r));
+    if (r0 == 0.0) return 0;
+    double rz = dot_free(m, r, z);
+    const int max_it = N < 2000 ? N + 20 : 2000 + N / 10;
+    for (int it = 1; it <= max_it; ++it) {
+        jacobian_apply(m, c, x, p, Ap, tmp);
+        const double pAp = dot_free(m, p, Ap);
+        if (!(pAp > 0.0)) return -1;
+        const double a = rz / pAp;
+        for (int k = 0; k < N; ++k) {
+            delta[k] += a * p[k];
+            r[k] -= a * Ap[k];
+        }
+        if (sqrt(dot_free(m, r, r)) <= rtol * r0) return it;
+        for (int k = 0; k < N; ++k) z[k] = r[k] / diag[k];
+        const double rz_new = dot_free(m, r, z);
+        const double b = rz_new / rz;
+        rz = rz_new;
+        for (int k = 0; k < N; ++k) p[k] = z[k] + b * p[k];
+    }
+    return -1;
+}
+
+static canopy_status hht_step(canopy_model *m, double dt, double alpha)
+{
+    const int n = m->nodes.count, N = 3 * n;
+    const hht_coeffs c = {alpha, 0.25 * (1.0 - alpha) * (1.0 - alpha),
+                          0.5 - alpha, dt};
+    const double *x0 = m->nodes.x, *v0 = m->nodes.v;
+    double *an = m->work[0], *Fn = m->work[1], *F1 = m->work[2],
+           *a1 = m->work[3], *v1 = m->work[4], *x1 = m->work[5],
+           *R = m->work[6], *delta = m->work[7], *diag = m->work[13],
+           *dx = m->work[14];
+
+    /* a_n: HHT's own acceleration from its previous step (it satisfies the
+     * HHT equation of that step, not M a = F(x_n, v_n); recomputing it would
+     * make the method first order). At start-up, and for Newmark, M^-1 F. */
+    canopy_forces(m, x0, v0, Fn);
+    const int carried = alpha != 0.0 && m->acc_valid;
+    for (int i = 0; i < n; ++i) {
+        const double inv = m->nodes.fixed[i] ? 0.0
+                                             : 1.0 / canopy_effective_mass(m, i);
+        for (int d = 0; d < 3; ++d)
+            an[3 * i + d] = carried ? (m->nodes.fixed[i] ? 0.0 : m->nodes.acc[3 * i + d])
+                                    : Fn[3 * i + d] * inv;
+    }
+    /* Jacobi preconditioner from per-node stiffness and dashpot sums. */
+    for (int k = 0; k < N; ++k) diag[k] = 0.0;
+    for (int s = 0; s < m->springs.count; ++s) {
+        const int i = m->springs.ends[2 * s], j = m->springs.ends[2 * s + 1];
+        const double w = m->springs.k[s] + c.gamma / (c.beta * dt) * m->springs.c[s];
+        diag[3 * i] += w;
+        diag[3 * j] += w;
+    }
+    for (int i = 0; i < n; ++i) {
+        const double dg = canopy_effective_mass(m, i) / (c.beta * dt * dt) +
+                          (1.0 + alpha) * diag[3 * i];
+        diag[3 * i] = diag[3 * i + 1] = diag[3 * i + 2] =
+            m->nodes.fixed[i] ? 1.0 : dg;
+    }
+    /* Predictor: dx = dt v_n + dt^2/2 a_n (fixed nodes: dt v_n, exact). */
+    for (int k = 0; k < N; ++k) dx[k] = dt * v0[k] + 0.5 * dt * dt * an[k];
+
+    double gscale = 0.0;
+    for (int i = 0; i < n; ++i) {
+        if (m->nodes.fixed[i]) continue;
+        const double *g = m->gravity;
+        gscale += m->nodes.mass[i] * m->nodes.mass[i] *
+                  (g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+    }
+    gscale = sqrt(gscale);
+    const double Fn_norm = sqrt(dot_free(m, Fn, Fn));
+
+    double res = INFINITY, scale = 0.0;
+    int stagnated = 0;
+    for (int it = 0; it <= m->implicit_max_iter; ++it) {
+        for (int k = 0; k < N; ++k) {
+            x1[k] = x0[k] + dx[k];
+            a1[k] = (dx[k] - dt * v0[k] - dt * dt * (0.5 - c.beta) * an[k]) /
+                    (c.beta * dt * dt);
+            v1[k] = v0[k] + dt * ((1.0 - c.gamma) * an[k] + c.gamma * a1[k]);
+        }
+        for (int i = 0; i < n; ++i)
+            if (m->nodes.fixed[i])
+                for (int d = 0; d < 3; ++d) {
+                    a1[3 * i + d] = 0.0;
+                    v1[3 * i + d] = v0[3 * i + d];
+                }
+        canopy_forces(m, x1, v1, F1);
+        double ma2 = 0.0;
+        for (int i = 0; i < n; ++i) {
+            const double mi = canopy_effective_mass(m, i);
+            for (int d = 0; d < 3; ++d) {
+                const int k = 3 * i + d;
+                const double ma = mi * a1[k];
+                R[k] = m->nodes.fixed[i]
+                           ? 0.0
+                           : ma - (1.0 + alpha) * F1[k] + alpha * Fn[k];
+                if (!m->nodes.fixed[i]) ma2 += ma * ma;
+            }
+        }
+        res = sqrt(dot_free(m, R, R));
+        scale = sqrt(ma2) + sqrt(dot_free(m, F1, F1)) + Fn_norm + gscale;
+        if (!isfinite(res)) break;
+        if (res <= m->implicit_tol * scale || stagnated) {
+            for (int k = 0; k < N; ++k) {
+                m->nodes.x[k] = x1[k];
+                m->nodes.v[k] = v1[k];
+                m->nodes.acc[k] = a1[k];
+            }
+            m->acc_valid = 1;
+            return CANOPY_OK;
+        }
+        if (it == m->implicit_max_iter) break;
+        for (int k = 0; k < N; ++k) R[k] = -R[k];
+        if (cg_solve(m, &c, x1, R, delta, diag, 1e-6) < 0)
+            return canopy_fail(m, CANOPY_ERR_NOT_CONVERGED,
+                               "%s: conjugate gradients did not converge "
+                               "(dt %g, Newton iteration %d)",
+                               alpha == 0.0 ? "newmark" : "hht", dt, it);
+        for (int i = 0; i < n; ++i)
+            if (!m->nodes.fixed[i])
+                for (int d = 0; d < 3; ++d) dx[3 * i + d] += delta[3 * i + d];
+        /* A correction at the round-off level of the displacement or of the
+         * positions themselves means the residual cannot fall further (it
+         * divides dx by beta dt^2, and forces near rest are tiny): accept
+         * after this last update. */
+        const double dnorm = sqrt(dot_free(m, delta, delta));
+        if (dnorm <= m->implicit_tol * 1e-3 * sqrt(dot_free(m, dx, dx)) ||
+            dnorm <= 4.0 * DBL_EPSILON * sqrt(dot_free(m, x1, x1)))
+            stagnated = 1;
+    }
+    return canopy_fail(m, CANOPY_ERR_NOT_CONVERGED,
+                       "%s: Newton did not converge in %d iterations (dt %g, "
+                       "relative residual %g, tolerance %g)",
+                       alpha == 0.0 ? "newmark" : "hht", m->implicit_max_iter,
+                       dt, scale > 0.0 ? res / scale : res, m->implicit_tol);
+}
+
+static canopy_status newmark_step(canopy_model *m, double dt)
+{
+    return hht_step(m, dt, 0.0);
+}
+
+static canopy_status hht_alpha_step(canopy_model *m, double dt)
+{
+    return hht_step(m, dt, m->hht_alpha);
+}
+
+const canopy_integrator canopy_integrator_newmark = {"newmark", 2, 1, 0,
+                                                     newmark_step};
+const canopy_integrator canopy_integrator_hht = {"hht", 2, 1, 1,
+                                                 hht_alpha_step};

@@ -1,0 +1,138 @@
+/* model_internal.h — the canopy_model structure and helpers shared inside libcanopy. */
+#ifndef CANOPY_MODEL_INTERNAL_H
+#define CANOPY_MODEL_INTERNAL_H
+
+#include "canopy.h"
+
+#include <stddef.h>
+
+#define CANOPY_MESSAGE_SIZE 512
+
+typedef struct canopy_integrator canopy_integrator;
+
+/* Growable arrays of nodes, springs and triangles (structure of arrays). */
+typedef struct canopy_nodes {
+    int count, capacity;
+    double *x;          /* 3*count positions */
+    double *v;          /* 3*count velocities */
+    double *mass;       /* lumped mass */
+    double *added_mass; /* optional added mass (0 by default) */
+    double *force_ext;  /* 3*count extra nodal forces */
+    double *acc;        /* 3*count acceleration carried by HHT between steps */
+    unsigned char *fixed;
+    unsigned char *group;
+} canopy_nodes;
+
+typedef struct canopy_springs {
+    int count, capacity;
+    int *ends;          /* 2*count node indices */
+    double *rest;       /* rest length l0 */
+    double *rest_vec;   /* 3*count rest vector x_j0 - x_i0 (Model-I) */
+    double *k;          /* stiffness */
+    double *c;          /* dashpot */
+    unsigned char *law;
+    unsigned char *group;
+} canopy_springs;
+
+typedef struct canopy_triangles {
+    int count, capacity;
+    int *nodes;         /* 3*count */
+    double *dp;         /* pressure jump */
+} canopy_triangles;
+
+/* Saved state for checkpoint/restore and for failed-step rollback. */
+typedef struct canopy_state_copy {
+    int valid;
+    int count;          /* nodes the arrays hold */
+    double t;
+    double *x, *v, *acc; /* 3*node count */
+    int acc_valid;
+} canopy_state_copy;
+
+struct canopy_model {
+    canopy_nodes nodes;
+    canopy_springs springs;
+    canopy_triangles tris;
+
+    double t;
+    int acc_valid;      /* nodes.acc holds the last HHT step's acceleration */
+    double gravity[3];
+    double porosity_alpha, porosity_beta;
+    int payload_node;
+
+    const canopy_integrator *integrator;
+    double max_omega_dt;
+    double hht_alpha;
+    double implicit_tol;
+    int implicit_max_iter;
+    double speed_limit;
+
+    canopy_state_copy checkpoint; /* user checkpoint */
+    canopy_state_copy rollback;   /* entry state of step/advance */
+
+    /* Work space, sized to the node count by canopy_model_prepare. */
+    int work_nodes;
+    double *work[16];
+    size_t work_bytes;
+
+    int prepared;               /* topology validated and work allocated */
+    char message[CANOPY_MESSAGE_SIZE];
+};
+
+/* Record a failure on the handle; returns `status` (printf-style message). */
+canopy_status canopy_fail(canopy_model *model, canopy_status status,
+                          const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
+/* Format into a caller's message buffer; returns `status`. */
+canopy_status canopy_format_message(char *buffer, size_t size,
+                                    canopy_status status, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 4, 5)))
+#endif
+    ;
+/* Clear the handle's message (a successful call). */
+void canopy_clear_message(canopy_model *model);
+
+/* Validate masses and topology, (re)allocate work arrays. */
+canopy_status canopy_model_prepare(canopy_model *model);
+/* Number of work arrays of 3*node doubles available to an integrator. */
+#define CANOPY_WORK_ARRAYS 16
+
+/* Forces (3*n) at positions x, velocities v: springs, dashpots, gravity,
+ * pressure, extra loads. Fixed nodes get their force too (a reaction). */
+void canopy_forces(const canopy_model *model, const double *x, const double *v,
+                   double *f);
+/* Accelerations (3*n): forces over effective mass; zero at fixed nodes. */
+void canopy_accelerations(const canopy_model *model, const double *x,
+                          const double *v, double *a);
+/* y = K u (tangent stiffness at x, 3*n). With clamp, the geometric term of
+ * compressed springs is dropped so K stays positive semi-definite. Fixed
+ * nodes' rows and columns are zero. */
+void canopy_tangent_stiffness(const canopy_model *model, const double *x,
+                              const double *u, double *y, int clamp);
+/* y = C u (dashpot tangent at x). */
+void canopy_tangent_damping(const canopy_model *model, const double *x,
+                            const double *u, double *y);
+/* Effective mass of node i (mass + added mass). */
+static inline double canopy_effective_mass(const canopy_model *m, int i)
+{
+    return m->nodes.mass[i] + m->nodes.added_mass[i];
+}
+
+/* State copies. */
+canopy_status canopy_state_save(canopy_model *model, canopy_state_copy *copy);
+void canopy_state_load(canopy_model *model, const canopy_state_copy *copy);
+void canopy_state_free(canopy_state_copy *copy);
+
+/* Triangle helpers. area_normal = 1/2 (xb - xa) x (xc - xa). */
+void canopy_triangle_area_normal(const double *x, const int *tri,
+                                 double area_normal[3]);
+
+/* Check a node / spring / triangle index; on failure sets the message. */
+canopy_status canopy_check_node(canopy_model *model, int node,
+                                const char *what);
+
+#endif /* CANOPY_MODEL_INTERNAL_H */
