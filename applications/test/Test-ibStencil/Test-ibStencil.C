@@ -1,0 +1,916 @@
+/*---------------------------------------------------------------------------*\
+    canopyFoam: Test-ibStencil.C — verification of the immersed-boundary
+    stencils: exact interpolation of constant and linear fields, one-sided
+    stencils, conservation and adjointness of spreading.
+-------------------------------------------------------------------------------
+Application
+    Test-ibStencil
+
+Description
+    Checks libcanopyImmersedBoundary (deltaKernel, ibStencil) on the mesh
+    of the case, serial or parallel, and exits non-zero (FatalError) when a
+    check fails. For each kernel:
+
+    - the kernel's identities on a uniform grid: sum_j phi(r - j) = 1,
+      sum_j (r - j) phi(r - j) = 0, phi = 0 outside the support;
+    - random markers (deterministic generator, the same on every rank) at
+      least 3 of the largest cells away from the boundary, two-sided
+      stencils: every marker found and solvable; interpolation of a
+      constant and of a linear vector field U = a + B.x, and of a linear
+      scalar field, exact to tol relative to the field's scale;
+    - one-sided stencils at reference + side*delta*n, delta = 1.5 cells
+      along a random normal n, for side = +1 and -1: no cell on the wrong
+      side, the same exactness checks;
+    - spreading of random marker forces F_m: sum_i f_i V_i = sum_m F_m and
+      sum_i f_i.q_i V_i = sum_m F_m.q(X_m) (adjointness, q a smooth
+      nonlinear field) to tol relative;
+    - the interpolation error of q (second-order accurate) below a loose
+      bound;
+    - markers anywhere (down to the walls) plus one outside the mesh: the
+      outside one flagged, without stencil, the others exact;
+    - a stencil updated twice (moved markers) equals a new one; an update
+      with no markers works (collectively).
+
+    Unknown kernel names must be refused, by name and from a dictionary
+    entry, with a message listing the valid kernels.
+
+    The interpolated values, spacings and global sums are written (master,
+    17 digits) to a text file in the case directory, so that serial and
+    parallel runs can be compared.
+
+    Option -perturb adds 1e-6 times a smooth nonlinear field to the linear
+    fields: the run must then fail (a check of the checks, and of the exit
+    status, serial and parallel).
+
+    Option -timing N instead times update, interpolate and spread for N
+    markers on a sphere in the middle of the domain (no checks).
+
+    Note: v1912's argList destructor ends every run with Pstream::exit(0),
+    so "return 1" from main exits with status 0: failures stop through
+    FatalError instead.
+
+Usage
+    \b Test-ibStencil [OPTIONS]
+
+    Options:
+      - \par -kernel \<name\>   only this kernel (default: all)
+      - \par -markers \<N\>     number of random markers (default 1000)
+      - \par -seed \<N\>        random seed (default 1912)
+      - \par -tol \<value\>     relative tolerance (default 1e-10)
+      - \par -output \<file\>   results file (default
+            Test-ibStencil.np\<nProcs\>.dat in the case directory)
+      - \par -timing \<N\>      time the operations for N markers instead
+      - \par -perturb          perturb the linear fields (must fail)
+
+\*---------------------------------------------------------------------------*/
+
+#include "argList.H"
+#include "Time.H"
+#include "fvMesh.H"
+#include "volFields.H"
+#include "Random.H"
+#include "OFstream.H"
+#include "deltaKernel.H"
+#include "ibStencil.H"
+
+#include <chrono>
+
+using namespace Foam;
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+namespace
+{
+
+label nChecks = 0;
+label nFailed = 0;
+
+// Record and print one check: value must lie in [0, tol] (NaN fails)
+void check(const string& what, const scalar value, const scalar tol)
+{
+    ++nChecks;
+    const bool ok = (value >= 0 && value <= tol);
+    if (!ok)
+    {
+        ++nFailed;
+    }
+    Info<< "    " << (ok ? "ok  " : "FAIL") << "  " << what.c_str()
+        << " = " << value << "  (limit " << tol << ")" << nl;
+}
+
+
+// Linear fields with known values
+const vector a0(1.0, -2.0, 0.5);
+const tensor B0(0.3, -1.2, 0.7, 2.0, 0.1, -0.4, -0.6, 0.9, 1.5);
+const vector g0(-1.1, 0.4, 2.3);
+
+vector linearU(const point& x)
+{
+    return a0 + (B0 & x);
+}
+
+scalar linearP(const point& x)
+{
+    return 3.0 + (g0 & x);
+}
+
+// A smooth nonlinear vector field, one period over the box
+vector smoothQ(const point& x, const boundBox& bb)
+{
+    const vector s(cmptDivide(x - bb.min(), bb.span()));
+    const scalar w = constant::mathematical::twoPi;
+    return vector
+    (
+        Foam::sin(w*s.x() + 0.3)*Foam::cos(w*s.y()),
+        Foam::cos(w*s.z() - 0.2) + s.x()*s.y(),
+        Foam::exp(s.z())*Foam::sin(w*s.y())
+    );
+}
+
+
+// Largest bounding-box extent of the cells, per direction (global)
+vector maxCellSpan(const fvMesh& mesh)
+{
+    vector span(Zero);
+    forAll(mesh.cells(), celli)
+    {
+        const boundBox bb(mesh.points(), mesh.cellPoints()[celli], false);
+        span = max(span, bb.span());
+    }
+    reduce(span, maxOp<vector>());
+    return span;
+}
+
+
+// Global maximum of |f| over the cells
+template<class Type>
+scalar fieldScale(const UList<Type>& f)
+{
+    scalar s = 0;
+    forAll(f, i)
+    {
+        s = max(s, mag(f[i]));
+    }
+    return returnReduce(s, maxOp<scalar>());
+}
+
+
+// Refused names: by name and from a dictionary entry
+void checkSelectionErrors()
+{
+    Info<< "Kernel selection" << nl;
+
+    const bool throwing = FatalError.throwExceptions();
+    const bool ioThrowing = FatalIOError.throwExceptions();
+
+    scalar bad = 0;
+    try
+    {
+        deltaKernel::New("noSuchKernel");
+        bad += 1;
+    }
+    catch (const Foam::error& err)
+    {
+        const string msg(err.message());
+        if
+        (
+            msg.find("noSuchKernel") == string::npos
+         || msg.find("roma3") == string::npos
+         || msg.find("peskin4") == string::npos
+        )
+        {
+            bad += 1;
+        }
+    }
+    check("unknown name not refused or valid names not listed", bad, 0);
+
+    bad = 0;
+    dictionary dict;
+    dict.name() = "testDict";
+    dict.add("ibKernel", word("noSuchKernel"));
+    try
+    {
+        deltaKernel::New(dict, "ibKernel");
+        bad += 1;
+    }
+    catch (const Foam::IOerror& err)
+    {
+        const string msg(err.message());
+        if
+        (
+            msg.find("ibKernel") == string::npos
+         || msg.find("noSuchKernel") == string::npos
+         || msg.find("roma3") == string::npos
+        )
+        {
+            bad += 1;
+        }
+    }
+    check("unknown entry not refused or entry not named", bad, 0);
+
+    bad = 1;
+    try
+    {
+        deltaKernel::New(dictionary(), "ibKernel");
+    }
+    catch (const Foam::IOerror& err)
+    {
+        bad = (string(err.message()).find("ibKernel") == string::npos);
+    }
+    check("missing entry (no default) not refused", bad, 0);
+
+    // Valid selections: from an entry, and the default for a missing one
+    dictionary dict2;
+    dict2.add("kernel", word("roma3"));
+    const bool ok =
+    (
+        deltaKernel::New(dict2, "kernel", "peskin4")->type() == "roma3"
+     && deltaKernel::New(dictionary(), "kernel", "peskin4")->type()
+            == "peskin4"
+     && deltaKernel::New("peskin4")->support() == 2
+     && deltaKernel::New("roma3")->support() == 1.5
+    );
+    check("wrong kernel selected from entry, default or name", ok ? 0 : 1, 0);
+
+    FatalError.throwExceptions(throwing);
+    FatalIOError.throwExceptions(ioThrowing);
+}
+
+
+// The kernel's identities on a uniform grid
+void checkKernelIdentities(const deltaKernel& kernel)
+{
+    scalar err0 = 0;
+    scalar err1 = 0;
+    const label nj = label(kernel.support()) + 2;
+    for (label s = 0; s <= 200; ++s)
+    {
+        const scalar r = s/200.0;
+        scalar sum0 = 0;
+        scalar sum1 = 0;
+        for (label j = -nj; j <= nj; ++j)
+        {
+            const scalar phi = kernel.phi(r - j);
+            sum0 += phi;
+            sum1 += (r - j)*phi;
+        }
+        err0 = max(err0, mag(sum0 - 1));
+        err1 = max(err1, mag(sum1));
+    }
+    check("1-D: max |sum_j phi(r-j) - 1|", err0, 1e-14);
+    check("1-D: max |sum_j (r-j) phi(r-j)|", err1, 1e-14);
+
+    const scalar s = kernel.support();
+    scalar outside = 0;
+    for (const scalar r : {s, s + 1e-3, s + 0.5, 10*s})
+    {
+        outside = max(outside, max(mag(kernel.phi(r)), mag(kernel.phi(-r))));
+    }
+    check("1-D: max |phi| outside the support", outside, 0);
+}
+
+
+// Collected exact fields of the test
+struct testFields
+{
+    volVectorField Uconst;
+    volVectorField Ulin;
+    volScalarField plin;
+    volVectorField q;
+    scalar UconstScale;
+    scalar UlinScale;
+    scalar plinScale;
+
+    //- With perturb, add 1e-6*q to the linear fields: a check of the
+    //  checks (the exactness checks must then fail)
+    testFields(const fvMesh& mesh, const bool perturb)
+    :
+        Uconst
+        (
+            IOobject("Uconst", mesh.time().timeName(), mesh),
+            mesh,
+            dimensionedVector("Uconst", dimless, vector(1.3, -0.7, 2.1))
+        ),
+        Ulin
+        (
+            IOobject("Ulin", mesh.time().timeName(), mesh),
+            mesh,
+            dimensionedVector("zero", dimless, Zero)
+        ),
+        plin
+        (
+            IOobject("plin", mesh.time().timeName(), mesh),
+            mesh,
+            dimensionedScalar("zero", dimless, Zero)
+        ),
+        q
+        (
+            IOobject("q", mesh.time().timeName(), mesh),
+            mesh,
+            dimensionedVector("zero", dimless, Zero)
+        )
+    {
+        const pointField& C = mesh.cellCentres();
+        forAll(C, celli)
+        {
+            Ulin.primitiveFieldRef()[celli] = linearU(C[celli]);
+            plin.primitiveFieldRef()[celli] = linearP(C[celli]);
+            q.primitiveFieldRef()[celli] = smoothQ(C[celli], mesh.bounds());
+        }
+        UconstScale = mag(Uconst.primitiveField()[0]);
+        UlinScale = fieldScale(Ulin.primitiveField());
+        plinScale = fieldScale(plin.primitiveField());
+
+        if (perturb)
+        {
+            Ulin.primitiveFieldRef() += 1e-6*UlinScale*q.primitiveField();
+            plin.primitiveFieldRef() +=
+                1e-6*plinScale*q.primitiveField().component(vector::X);
+        }
+    }
+};
+
+
+// Checks of one stencil; writes its per-marker results. Exactly
+// nInvalidExpected markers (the last ones) must be invalid; the checks use
+// the valid ones.
+void checkStencil
+(
+    const word& kernelName,
+    const word& tag,
+    const ibStencil& st,
+    const pointField& X,
+    const label nInvalidExpected,
+    const testFields& tf,
+    const scalar tol,
+    Random& rnd,
+    OFstream* osPtr
+)
+{
+    const fvMesh& mesh = st.mesh();
+    const label N = X.size();
+    const boolList& valid = st.valid();
+
+    label wrongFlags = 0;
+    forAll(valid, m)
+    {
+        if (valid[m] != (m < N - nInvalidExpected))
+        {
+            ++wrongFlags;
+        }
+    }
+    check("markers wrongly flagged (found and solvable)", wrongFlags, 0);
+    check
+    (
+        "|nInvalid - " + Foam::name(nInvalidExpected) + "|",
+        mag(st.nInvalid() - nInvalidExpected),
+        0
+    );
+
+    // Stencil sizes, and how many stencils span more than one rank
+    labelList nCells(N);
+    labelList nRanks(N);
+    forAll(nCells, m)
+    {
+        nCells[m] = st.cells(m).size();
+        nRanks[m] = (nCells[m] ? 1 : 0);
+    }
+    Pstream::listCombineGather(nCells, plusEqOp<label>());
+    Pstream::listCombineScatter(nCells);
+    Pstream::listCombineGather(nRanks, plusEqOp<label>());
+    Pstream::listCombineScatter(nRanks);
+
+    label minCells = labelMax;
+    label maxCells = 0;
+    label nShared = 0;
+    scalar minRcond = GREAT;
+    forAll(nCells, m)
+    {
+        if (valid[m])
+        {
+            minCells = min(minCells, nCells[m]);
+            maxCells = max(maxCells, nCells[m]);
+            minRcond = min(minRcond, st.rcond()[m]);
+            nShared += (nRanks[m] > 1);
+        }
+        else if (nCells[m])
+        {
+            ++wrongFlags;
+        }
+    }
+    Info<< "    (cells per marker " << minCells << " .. " << maxCells
+        << ", min rcond " << minRcond << ", " << nShared
+        << " stencils on 2+ ranks)" << nl;
+    check("stencil entries of markers that are not found", wrongFlags, 0);
+    if (Pstream::parRun() && N - nInvalidExpected >= 100)
+    {
+        // Otherwise serial = parallel would prove little
+        check
+        (
+            "parallel split not exercised (1: no stencil spans two ranks)",
+            nShared ? 0 : 1,
+            0
+        );
+    }
+
+    // Interpolation of constant and linear fields: exact
+    const vectorField Uc(st.interpolate(tf.Uconst));
+    const vectorField Ul(st.interpolate(tf.Ulin));
+    const scalarField pl(st.interpolate(tf.plin));
+    const vectorField qi(st.interpolate(tf.q));
+
+    const boundBox& bb = mesh.bounds();
+    const scalar qScale = fieldScale(tf.q.primitiveField());
+
+    scalar errC = 0, errL = 0, errP = 0, errQ = 0;
+    forAll(X, m)
+    {
+        if (valid[m])
+        {
+            errC = max(errC, mag(Uc[m] - tf.Uconst.primitiveField()[0]));
+            errL = max(errL, mag(Ul[m] - linearU(X[m])));
+            errP = max(errP, mag(pl[m] - linearP(X[m])));
+            errQ = max(errQ, mag(qi[m] - smoothQ(X[m], bb)));
+        }
+        else if (mag(Uc[m]) + mag(qi[m]) != 0)
+        {
+            errC = GREAT;
+        }
+    }
+    check("max |U - U_exact|/|U|, constant U", errC/tf.UconstScale, tol);
+    check("max |U - U_exact|/max|U|, U = a + B.x", errL/tf.UlinScale, tol);
+    check("max |p - p_exact|/max|p|, p = p0 + g.x", errP/tf.plinScale, tol);
+    // Second order: loose bound, catches gross errors only
+    check("max |q - q_exact|/max|q|, smooth q (2nd order)", errQ/qScale, 0.1);
+
+    // Spreading: conservation and adjointness (markers without stencil
+    // spread nothing)
+    vectorField F(N);
+    forAll(F, m)
+    {
+        F[m] = 2*rnd.sample01<vector>() - vector::one;
+    }
+    vectorField f(mesh.nCells(), Zero);
+    st.spread(F, f);
+
+    vector sumF(Zero);
+    scalar normF = 0;
+    scalar rhs = 0;
+    scalar normFq = 0;
+    label nValid = 0;
+    forAll(F, m)
+    {
+        if (valid[m])
+        {
+            sumF += F[m];
+            normF += mag(F[m]);
+            rhs += F[m] & qi[m];
+            normFq += mag(F[m])*mag(qi[m]);
+            ++nValid;
+        }
+    }
+
+    const scalarField& V = mesh.cellVolumes();
+    const vector sumFV = gSum(V*f);
+    check
+    (
+        "|sum_i f_i V_i - sum_m F_m|/sum_m |F_m|",
+        mag(sumFV - sumF)/normF,
+        tol
+    );
+
+    const scalar lhs = gSum(V*(f & tf.q.primitiveField()));
+    check
+    (
+        "|sum_i f_i.q_i V_i - sum_m F_m.q_m|/sum_m |F_m||q_m|",
+        mag(lhs - rhs)/normFq,
+        tol
+    );
+
+    // Scalar spreading
+    scalarField fs(mesh.nCells(), Zero);
+    st.spread(scalarField(N, 1.0), fs);
+    check
+    (
+        "|sum_i s_i V_i - N|/N, unit scalar per valid marker",
+        mag(gSum(V*fs) - nValid)/max(nValid, 1),
+        tol
+    );
+
+    if (osPtr)
+    {
+        OFstream& os = *osPtr;
+        forAll(X, m)
+        {
+            const vector& h = st.spacing()[m];
+            os  << kernelName << ' ' << tag << ' ' << m << ' '
+                << label(st.found()[m]) << ' ' << label(st.solvable()[m])
+                << ' ' << nCells[m]
+                << ' ' << h.x() << ' ' << h.y() << ' ' << h.z()
+                << ' ' << st.rcond()[m]
+                << ' ' << qi[m].x() << ' ' << qi[m].y() << ' ' << qi[m].z()
+                << ' ' << Ul[m].x() << ' ' << Ul[m].y() << ' ' << Ul[m].z()
+                << ' ' << pl[m] << nl;
+        }
+        os  << kernelName << ' ' << tag << " sumFV "
+            << sumFV.x() << ' ' << sumFV.y() << ' ' << sumFV.z() << nl
+            << kernelName << ' ' << tag << " adjoint " << lhs << ' ' << rhs
+            << nl;
+    }
+}
+
+
+void testKernel
+(
+    const fvMesh& mesh,
+    const word& kernelName,
+    const label nMarkers,
+    const label seed,
+    const scalar tol,
+    const testFields& tf,
+    OFstream* osPtr
+)
+{
+    autoPtr<deltaKernel> kernelPtr(deltaKernel::New(kernelName));
+    const deltaKernel& kernel = kernelPtr();
+
+    Info<< nl << "Kernel " << kernelName << " (support "
+        << kernel.support() << " cells)" << nl;
+
+    checkKernelIdentities(kernel);
+
+    // Random markers at least 3 of the largest cells from the boundary;
+    // in empty/wedge directions on the mid-plane
+    const boundBox& bb = mesh.bounds();
+    const vector margin(3*maxCellSpan(mesh));
+    const Vector<label>& geomD = mesh.geometricD();
+
+    Random rnd(seed);
+    pointField X(nMarkers);
+    forAll(X, m)
+    {
+        const vector s(rnd.sample01<vector>());
+        for (direction d = 0; d < 3; ++d)
+        {
+            X[m][d] =
+            (
+                geomD[d] == 1
+              ? bb.min()[d] + margin[d] + s[d]*(bb.span()[d] - 2*margin[d])
+              : bb.centre()[d]
+            );
+        }
+    }
+
+    ibStencil st(mesh, kernel);
+    st.update(X);
+    Info<< "  two-sided stencils, " << nMarkers << " markers" << nl;
+    checkStencil(kernelName, "centre", st, X, 0, tf, tol, rnd, osPtr);
+
+    // Re-using a stencil (previous cells as hints, kept work lists) must
+    // give what a new one gives: move the markers by up to 0.4 cells
+    {
+        pointField Xm(X);
+        forAll(Xm, m)
+        {
+            const vector s(2*rnd.sample01<vector>() - vector::one);
+            Xm[m] += 0.4*cmptMultiply(s, st.spacing()[m]);
+        }
+        ibStencil fresh(mesh, kernel);
+        fresh.update(Xm);
+
+        ibStencil reused(mesh, kernel);
+        reused.update(X);
+        reused.update(Xm);
+
+        scalar diff = 0;
+        if
+        (
+            reused.offsets() != fresh.offsets()
+         || reused.cells() != fresh.cells()
+         || reused.spacing() != fresh.spacing()
+        )
+        {
+            diff = GREAT;
+        }
+        else
+        {
+            forAll(fresh.weights(), k)
+            {
+                diff = max(diff, mag(reused.weights()[k] - fresh.weights()[k]));
+            }
+        }
+        reduce(diff, maxOp<scalar>());
+        Info<< "  re-used stencil, markers moved" << nl;
+        check("max |w_reused - w_new| (identical stencils)", diff, 0);
+    }
+
+    // One-sided stencils: at X + side*delta*n, delta = 1.5 cells along n
+    vectorField n(nMarkers);
+    forAll(n, m)
+    {
+        vector v(Zero);
+        while (mag(v) < 0.1)
+        {
+            v = 2*rnd.sample01<vector>() - vector::one;
+            for (direction d = 0; d < 3; ++d)
+            {
+                if (geomD[d] != 1)
+                {
+                    v[d] = 0;
+                }
+            }
+        }
+        n[m] = v/mag(v);
+    }
+    scalarField delta(nMarkers);
+    forAll(delta, m)
+    {
+        delta[m] = 1.5*(cmptMag(n[m]) & st.spacing()[m]);
+    }
+
+    for (const label side : {1, -1})
+    {
+        const pointField Xs(X + side*delta*n);
+
+        ibStencil one(mesh, kernel);
+        one.update(Xs, n, X, side);
+
+        Info<< "  one-sided stencils, side " << side << nl;
+
+        // No cell on the wrong side
+        label wrong = 0;
+        const pointField& C = mesh.cellCentres();
+        forAll(Xs, m)
+        {
+            for (const label celli : one.cells(m))
+            {
+                if (side*((C[celli] - X[m]) & n[m]) <= 0)
+                {
+                    ++wrong;
+                }
+            }
+        }
+        reduce(wrong, sumOp<label>());
+        check("stencil cells on the wrong side", wrong, 0);
+
+        checkStencil
+        (
+            kernelName,
+            side > 0 ? "plus" : "minus",
+            one, Xs, 0, tf, tol, rnd, osPtr
+        );
+    }
+
+    // No markers at all: still collective, nothing to do
+    {
+        ibStencil none(mesh, kernel);
+        none.update(pointField());
+        const vectorField Un(none.interpolate(tf.Ulin));
+        vectorField f(mesh.nCells(), Zero);
+        none.spread(vectorField(), f);
+        check
+        (
+            "no markers: |results| + entries",
+            Un.size() + none.cells().size() + none.nInvalid() + gMax(mag(f)),
+            0
+        );
+    }
+
+    // Markers anywhere, also in the cells next to the walls (truncated,
+    // still moment-corrected stencils), and the last one outside the mesh
+    {
+        pointField Xw(nMarkers/4 + 1);
+        forAll(Xw, m)
+        {
+            const vector s(rnd.sample01<vector>());
+            for (direction d = 0; d < 3; ++d)
+            {
+                Xw[m][d] =
+                (
+                    geomD[d] == 1
+                  ? bb.min()[d] + (0.001 + 0.998*s[d])*bb.span()[d]
+                  : bb.centre()[d]
+                );
+            }
+        }
+        Xw.last() = bb.max() + 0.1*bb.span();
+
+        ibStencil wall(mesh, kernel);
+        wall.update(Xw);
+        Info<< "  two-sided stencils anywhere (near walls), "
+            << Xw.size() - 1 << " markers + 1 outside" << nl;
+        checkStencil(kernelName, "anywhere", wall, Xw, 1, tf, tol, rnd, osPtr);
+    }
+}
+
+
+// Time update, interpolate and spread for N markers on a sphere
+void timeOperations(const fvMesh& mesh, const label N, const testFields& tf)
+{
+    typedef std::chrono::steady_clock clock;
+    const auto seconds = [](clock::time_point t0)
+    {
+        return std::chrono::duration<double>(clock::now() - t0).count();
+    };
+
+    const boundBox& bb = mesh.bounds();
+    const point c(bb.centre());
+    const scalar R = 0.3*cmptMin(bb.span());
+    const scalar golden = constant::mathematical::pi*(3 - Foam::sqrt(5.0));
+
+    // Fibonacci sphere: evenly spread, like canopy markers on a surface
+    pointField X(N);
+    vectorField n(N);
+    forAll(X, m)
+    {
+        const scalar z = 1 - 2*(m + 0.5)/N;
+        const scalar r = Foam::sqrt(max(1 - z*z, scalar(0)));
+        n[m] = vector(r*Foam::cos(golden*m), r*Foam::sin(golden*m), z);
+        X[m] = c + R*n[m];
+    }
+
+    const label nRep = 5;
+    wordList names(deltaKernel::dictionaryConstructorTablePtr_->sortedToc());
+
+    Info<< nl << "Timing, " << N << " markers, " << returnReduce
+        (
+            mesh.nCells(), sumOp<label>()
+        ) << " cells, " << Pstream::nProcs() << " rank(s), ms per call"
+        << nl;
+
+    for (const word& name : names)
+    {
+        autoPtr<deltaKernel> kernel(deltaKernel::New(name));
+        ibStencil st(mesh, kernel());
+
+        // First update builds the cell tree and the tet decomposition
+        clock::time_point t0 = clock::now();
+        st.update(X);
+        const double tFirst = seconds(t0);
+
+        t0 = clock::now();
+        for (label i = 0; i < nRep; ++i)
+        {
+            st.update(X);
+        }
+        const double tUpdate = seconds(t0)/nRep;
+
+        const pointField Xs(X + 0.05*R*n);
+        ibStencil one(mesh, kernel());
+        t0 = clock::now();
+        for (label i = 0; i < nRep; ++i)
+        {
+            one.update(Xs, n, X, 1);
+        }
+        const double tUpdate1 = seconds(t0)/nRep;
+
+        vectorField Um;
+        t0 = clock::now();
+        for (label i = 0; i < 4*nRep; ++i)
+        {
+            st.interpolate(tf.Ulin.primitiveField(), Um);
+        }
+        const double tInterp = seconds(t0)/(4*nRep);
+
+        vectorField F(N, vector(1, 2, 3));
+        vectorField f(mesh.nCells(), Zero);
+        t0 = clock::now();
+        for (label i = 0; i < 4*nRep; ++i)
+        {
+            st.spread(F, f);
+        }
+        const double tSpread = seconds(t0)/(4*nRep);
+
+        const label nEntries = returnReduce(st.cells().size(), sumOp<label>());
+
+        Info<< "  " << name << ": first update " << 1e3*tFirst
+            << ", update " << 1e3*tUpdate
+            << ", one-sided update " << 1e3*tUpdate1
+            << ", interpolate (vector) " << 1e3*tInterp
+            << ", spread (vector) " << 1e3*tSpread
+            << "; " << scalar(nEntries)/max(N, 1) << " cells per marker, "
+            << st.nInvalid() << " invalid" << nl;
+    }
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Verify the immersed-boundary stencils (deltaKernel, ibStencil);"
+        " exits non-zero when a check fails"
+    );
+    argList::noFunctionObjects();
+    argList::addOption("kernel", "name", "Test only this kernel");
+    argList::addOption("markers", "N", "Number of random markers (1000)");
+    argList::addOption("seed", "N", "Random seed (1912)");
+    argList::addOption("tol", "value", "Relative tolerance (1e-10)");
+    argList::addOption("output", "file", "Results file");
+    argList::addOption
+    (
+        "timing", "N", "Time the operations for N markers (no checks)"
+    );
+    argList::addBoolOption
+    (
+        "perturb",
+        "Perturb the linear fields by 1e-6 (a check of the checks: must fail)"
+    );
+
+    #include "setRootCase.H"
+    #include "createTime.H"
+
+    Info<< "Create mesh for time = " << runTime.timeName() << nl << endl;
+    fvMesh mesh
+    (
+        IOobject
+        (
+            fvMesh::defaultRegion,
+            runTime.timeName(),
+            runTime,
+            IOobject::MUST_READ
+        )
+    );
+
+    const testFields tf(mesh, args.found("perturb"));
+
+    if (args.found("timing"))
+    {
+        timeOperations(mesh, args.get<label>("timing"), tf);
+        Info<< nl << "End" << nl << endl;
+        return 0;
+    }
+
+    const label nMarkers = args.getOrDefault<label>("markers", 1000);
+    const label seed = args.getOrDefault<label>("seed", 1912);
+    const scalar tol = args.getOrDefault<scalar>("tol", 1e-10);
+
+    wordList kernels;
+    if (args.found("kernel"))
+    {
+        kernels = wordList(1, args.get<word>("kernel"));
+    }
+    else
+    {
+        kernels = deltaKernel::dictionaryConstructorTablePtr_->sortedToc();
+    }
+
+    const fileName outputName
+    (
+        args.getOrDefault<fileName>
+        (
+            "output",
+            runTime.globalPath()
+           /("Test-ibStencil.np" + Foam::name(Pstream::nProcs()) + ".dat")
+        )
+    );
+
+    autoPtr<OFstream> osPtr;
+    if (Pstream::master())
+    {
+        osPtr.reset(new OFstream(outputName));
+        osPtr->precision(17);
+    }
+
+    Info<< "Mesh: " << returnReduce(mesh.nCells(), sumOp<label>())
+        << " cells, bounds " << mesh.bounds() << ", geometric directions "
+        << mesh.geometricD() << nl
+        << "Tolerance " << tol << ", " << nMarkers << " markers, seed "
+        << seed << nl << nl;
+
+    checkSelectionErrors();
+
+    for (const word& kernelName : kernels)
+    {
+        testKernel
+        (
+            mesh, kernelName, nMarkers, seed, tol, tf,
+            osPtr.valid() ? osPtr.get() : nullptr
+        );
+    }
+
+    reduce(nFailed, maxOp<label>());
+
+    Info<< nl << "Results written to " << outputName << nl
+        << nChecks << " checks, " << nFailed << " failed" << nl << endl;
+
+    if (nFailed)
+    {
+        // Not "return 1": argList's destructor ends the run with
+        // Pstream::exit(0), which would hide the failure
+        FatalErrorInFunction
+            << nFailed << " of " << nChecks << " checks failed"
+            << exit(FatalError);
+    }
+
+    Info<< "End" << nl << endl;
+
+    return 0;
+}
+
+
+// ************************************************************************* //

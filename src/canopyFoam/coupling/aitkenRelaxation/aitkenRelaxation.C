@@ -1,0 +1,56 @@
+/*---------------------------------------------------------------------------*\
+    canopyFoam: aitkenRelaxation.C — Aitken's dynamic under-relaxation.
+\*---------------------------------------------------------------------------*/
+
+#include "aitkenRelaxation.H"
+
+Foam::aitkenRelaxation::aitkenRelaxation
+(
+    scalar omega0,
+    scalar omegaMin,
+    scalar omegaMax
+)
+:
+    omega0_(omega0),
+    omegaMin_(omegaMin),
+    omegaMax_(omegaMax),
+    omega_(omega0),
+    previousResidual_()
+{}
+
+
+void Foam::aitkenRelaxation::reset()
+{
+    previousResidual_.clear();
+    omega_ = omega0_;
+}
+
+
+Foam::scalar Foam::aitkenRelaxation::relax
+(
+    scalarField& x,
+    const scalarField& target
+)
+{
+    const scalarField r(target - x);
+
+    if (previousResidual_.size() == r.size())
+    {
+        const scalarField dr(r - previousResidual_);
+        const scalar drdr = sum(dr*dr);
+        const scalar next =
+            drdr > VSMALL ? -omega_*sum(previousResidual_*dr)/drdr : omega_;
+        // A non-positive factor means the residual grew along the last
+        // update (the fluid moved under the interface): start afresh
+        omega_ = next > 0 ? min(max(next, omegaMin_), omegaMax_) : omega0_;
+    }
+    else
+    {
+        omega_ = omega0_;
+    }
+
+    x += omega_*r;
+    previousResidual_ = r;
+
+    return r.size() ? max(mag(r)) : 0;
+}

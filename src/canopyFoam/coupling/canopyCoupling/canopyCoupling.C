@@ -1,0 +1,475 @@
+/*---------------------------------------------------------------------------*\
+    canopyFoam: canopyCoupling.C — immersed-boundary coupling of the flow
+    with the libcanopy structure.
+\*---------------------------------------------------------------------------*/
+
+#include "canopyCoupling.H"
+#include "canopy.h"
+
+namespace
+{
+
+// Stop with libcanopy's message when a call fails.
+void check(const canopy_model* model, canopy_status st, const char* what)
+{
+    if (st != CANOPY_OK)
+    {
+        FatalErrorInFunction
+            << "libcanopy " << what << " failed: "
+            << canopy_model_message(model) << Foam::exit(Foam::FatalError);
+    }
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::canopyCoupling::updateStencils()
+{
+    const canopyMarkers& mk = markers_();
+    velocityStencil_->update(mk.points());
+
+    // Pressure sampling points x -/+ delta n, delta in local cells along n
+    const vectorField& h = velocityStencil_->spacing();
+    const vectorField& n = mk.normals();
+    scalarField delta(mk.size());
+    forAll(delta, m)
+    {
+        const vector nn = cmptMag(n[m]);
+        delta[m] = pressureOffset_*(nn & h[m]);
+    }
+    plusStencil_->update(mk.points() + delta*n, n, mk.points(), 1);
+    minusStencil_->update(mk.points() - delta*n, n, mk.points(), -1);
+
+    // Every marker must have a stencil: a canopy leaving the mesh stops here
+    const boolList* flags[3] =
+    {
+        &velocityStencil_->valid(),
+        &plusStencil_->valid(),
+        &minusStencil_->valid()
+    };
+    const char* names[3] = {"velocity", "pressure (+ side)", "pressure (- side)"};
+    for (int s = 0; s < 3; ++s)
+    {
+        forAll(*flags[s], m)
+        {
+            if (!(*flags[s])[m])
+            {
+                FatalErrorInFunction
+                    << "Marker " << m << " at " << mk.points()[m]
+                    << " has no " << names[s] << " stencil: the canopy is "
+                    << "leaving the mesh (or the mesh is too coarse near it)"
+                    << exit(FatalError);
+            }
+        }
+    }
+}
+
+
+Foam::tmp<Foam::scalarField> Foam::canopyCoupling::markerVolumes() const
+{
+    const vectorField& h = velocityStencil_->spacing();
+    tmp<scalarField> tdV(new scalarField(markers_->areas()));
+    scalarField& dV = tdV.ref();
+    forAll(dV, m)
+    {
+        dV[m] *= Foam::cbrt(h[m].x()*h[m].y()*h[m].z());
+    }
+    return tdV;
+}
+
+
+void Foam::canopyCoupling::writeSeries()
+{
+    if (!Pstream::master())
+    {
+        return;
+    }
+    const Time& runTime = mesh_.time();
+    if (!series_.valid())
+    {
+        const fileName dir
+        (
+            runTime.globalPath()/"postProcessing"/"canopy"/runTime.timeName()
+        );
+        mkDir(dir);
+        series_.reset(new OFstream(dir/"canopy.dat"));
+        series_()
+            << "# time payload_x payload_y payload_z payload_Ux payload_Uy"
+            << " payload_Uz force_x force_y force_z projected_diameter"
+            << " canopy_area kinetic spring gravity coupling_iterations"
+            << " residual slip substeps" << nl;
+    }
+    canopy_model* model = structure_.model();
+    double x[3] = {0, 0, 0}, v[3] = {0, 0, 0};
+    canopy_model_payload_state(model, x, v);
+    double diameter = 0, area = 0;
+    canopy_model_projected_diameter(model, &diameter);
+    canopy_model_canopy_area(model, &area);
+    canopy_energies e;
+    canopy_model_energies(model, &e);
+    series_()
+        << runTime.value() << ' ' << x[0] << ' ' << x[1] << ' ' << x[2]
+        << ' ' << v[0] << ' ' << v[1] << ' ' << v[2]
+        << ' ' << pressureForce_.x() << ' ' << pressureForce_.y() << ' '
+        << pressureForce_.z() << ' ' << diameter << ' ' << area
+        << ' ' << e.kinetic << ' ' << e.spring << ' ' << e.gravity
+        << ' ' << iteration_ << ' ' << residual_ << ' ' << slip_
+        << ' ' << subSteps_ << endl;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::canopyCoupling::canopyCoupling
+(
+    const fvMesh& mesh,
+    bool forceExplicit
+)
+:
+    mesh_(mesh),
+    structure_(mesh.time()),
+    scheme_(scheme::strong),
+    rho_(1.2),
+    forcingIterations_(2),
+    noSlip_(true),
+    pressureOffset_(3),
+    tolerance_(1e-3),
+    Uref_(1),
+    aitken_(0.5),
+    force_
+    (
+        IOobject
+        (
+            "canopyForce",
+            mesh.time().timeName(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::AUTO_WRITE
+        ),
+        mesh,
+        dimensionedVector(dimVelocity/dimTime, Zero)
+    ),
+    iteration_(0),
+    structureSolves_(0),
+    residual_(0),
+    converged_(false),
+    subSteps_(0),
+    markerForce_(Zero),
+    pressureForce_(Zero),
+    slip_(0)
+{
+    const dictionary& dict = structure_.dict().subOrEmptyDict("coupling");
+
+    const word schemeName(dict.getOrDefault<word>("scheme", "strong"));
+    if (schemeName == "strong")
+    {
+        scheme_ = scheme::strong;
+    }
+    else if (schemeName == "explicit")
+    {
+        scheme_ = scheme::explicitScheme;
+    }
+    else
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'coupling.scheme' = " << schemeName
+            << " is not a coupling scheme; valid: strong explicit"
+            << exit(FatalIOError);
+    }
+
+    if (forceExplicit)
+    {
+        scheme_ = scheme::explicitScheme;
+    }
+
+    rho_ = dict.getOrDefault<scalar>("rho", 1.2);
+    forcingIterations_ = dict.getOrDefault<label>("forcingIterations", 2);
+    pressureOffset_ = dict.getOrDefault<scalar>("pressureOffset", 3);
+    tolerance_ = dict.getOrDefault<scalar>("tolerance", 1e-3);
+    Uref_ = dict.getOrDefault<scalar>("Uref", 1);
+    const scalar omega0 = dict.getOrDefault<scalar>("initialRelaxation", 0.5);
+
+    const word tangential(dict.getOrDefault<word>("tangential", "noSlip"));
+    if (tangential != "noSlip" && tangential != "free")
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'coupling.tangential' = " << tangential
+            << " is not valid; valid: noSlip free" << exit(FatalIOError);
+    }
+    noSlip_ = tangential == "noSlip";
+
+    const struct { const char* name; scalar value; scalar lo; } positive[] =
+    {
+        {"rho", rho_, 0},
+        {"pressureOffset", pressureOffset_, 0},
+        {"tolerance", tolerance_, 0},
+        {"Uref", Uref_, 0},
+        {"initialRelaxation", omega0, 0},
+    };
+    for (const auto& p : positive)
+    {
+        if (!(p.value > p.lo))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry 'coupling." << p.name << "' = " << p.value
+                << " must be > 0" << exit(FatalIOError);
+        }
+    }
+    if (forcingIterations_ < 1)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'coupling.forcingIterations' = " << forcingIterations_
+            << " must be >= 1" << exit(FatalIOError);
+    }
+    aitken_ = aitkenRelaxation(omega0);
+
+    kernel_ = deltaKernel::New(dict.getOrDefault<word>("kernel", "roma3"));
+
+    scalar spacing = Foam::cbrt(gMin(mesh.V().field()));
+    dict.readIfPresent("markerSpacing", spacing);
+    if (!(spacing > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'coupling.markerSpacing' = " << spacing
+            << " must be > 0" << exit(FatalIOError);
+    }
+
+    markers_.reset(new canopyMarkers(structure_.model(), spacing));
+    velocityStencil_.reset(new ibStencil(mesh, kernel_()));
+    plusStencil_.reset(new ibStencil(mesh, kernel_()));
+    minusStencil_.reset(new ibStencil(mesh, kernel_()));
+
+    // Interface velocity from the structure's initial state
+    const int nt = canopy_model_triangle_count(structure_.model());
+    normalVelocity_.setSize(nt);
+    triangleVelocity_.setSize(nt);
+    check
+    (
+        structure_.model(),
+        canopy_model_get_normal_velocities
+        (
+            structure_.model(), normalVelocity_.data(), nt
+        ),
+        "get_normal_velocities"
+    );
+    check
+    (
+        structure_.model(),
+        canopy_model_get_triangle_velocities
+        (
+            structure_.model(),
+            reinterpret_cast<double*>(triangleVelocity_.data()), nt
+        ),
+        "get_triangle_velocities"
+    );
+    updateStencils();
+
+    Info<< "canopyCoupling: "
+        << (scheme_ == scheme::strong ? "strong" : "explicit") << " coupling, "
+        << markers_->size() << " markers on " << nt << " canopy triangles"
+        << " (spacing " << spacing << " m), kernel "
+        << dict.getOrDefault<word>("kernel", "roma3")
+        << ", " << forcingIterations_ << " forcing iterations, "
+        << tangential << nl << endl;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::canopyCoupling::beginTimeStep()
+{
+    check
+    (
+        structure_.model(),
+        canopy_model_checkpoint(structure_.model()),
+        "checkpoint"
+    );
+    aitken_.reset();
+    iteration_ = 0;
+    structureSolves_ = 0;
+    converged_ = false;
+    residual_ = 0;
+}
+
+
+Foam::tmp<Foam::volVectorField> Foam::canopyCoupling::forcingIncrement
+(
+    const volVectorField& U
+)
+{
+    const scalar dt = mesh_.time().deltaTValue();
+    const canopyMarkers& mk = markers_();
+    const scalarField dV(markerVolumes());
+    const vectorField& n = mk.normals();
+    const scalarField vn(mk.toMarkers(normalVelocity_));
+    const vectorField vt(mk.toMarkers(triangleVelocity_));
+
+    volVectorField Ustar("canopyUstar", U);
+    tmp<volVectorField> tdForce
+    (
+        new volVectorField
+        (
+            IOobject("canopyForceIncrement", mesh_.time().timeName(), mesh_),
+            mesh_,
+            dimensionedVector(force_.dimensions(), Zero)
+        )
+    );
+    volVectorField& dForce = tdForce.ref();
+    vectorField markerForce(mk.size(), Zero);
+    scalar slip = 0;
+
+    for (label k = 0; k < forcingIterations_; ++k)
+    {
+        const vectorField Um(velocityStencil_->interpolate(Ustar));
+        vectorField F(mk.size());
+        forAll(F, m)
+        {
+            // Target: the normal velocity of the interface (canopy motion
+            // + porous seepage); tangentially the canopy's own velocity
+            // (no slip) or the fluid's (free slip).
+            const vector tangent =
+                noSlip_ ? (vt[m] - (vt[m] & n[m])*n[m])
+                        : (Um[m] - (Um[m] & n[m])*n[m]);
+            const vector target = tangent + vn[m]*n[m];
+            F[m] = (target - Um[m])*dV[m]/dt;
+            if (k == 0)
+            {
+                slip = max(slip, mag((Um[m] & n[m]) - vn[m]));
+            }
+        }
+        markerForce += F;
+        vectorField df(mesh_.nCells(), Zero);
+        velocityStencil_->spread(F, df);
+        dForce.primitiveFieldRef() += df;
+        Ustar.primitiveFieldRef() += dt*df;
+        Ustar.correctBoundaryConditions();
+    }
+
+    force_.primitiveFieldRef() += dForce.primitiveField();
+    force_.correctBoundaryConditions();
+    markerForce_ = sum(markerForce);
+    slip_ = slip/max(Uref_, vn.size() ? max(mag(vn)) : 0);
+    return tdForce;
+}
+
+
+void Foam::canopyCoupling::correctForcing
+(
+    const volVectorField& U,
+    fvVectorMatrix& UEqn
+)
+{
+    UEqn -= forcingIncrement(U);
+}
+
+
+Foam::tmp<Foam::surfaceScalarField> Foam::canopyCoupling::faceForce() const
+{
+    return fvc::interpolate(force_) & mesh_.Sf();
+}
+
+
+bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
+{
+    ++iteration_;
+    if (scheme_ == scheme::explicitScheme && structureSolves_ > 0)
+    {
+        return converged_;
+    }
+
+    canopy_model* model = structure_.model();
+    const canopyMarkers& mk = markers_();
+
+    // Pressure jump dp = rho (p- - p+) per marker, then per triangle
+    const scalarField pPlus(plusStencil_->interpolate(p));
+    const scalarField pMinus(minusStencil_->interpolate(p));
+    const scalarField dpMarker(rho_*(pMinus - pPlus));
+    scalarField dp(mk.triangleAverage(dpMarker));
+    pressureForce_ = sum(dpMarker*mk.areas()*mk.normals());
+
+    const int nt = dp.size();
+    check(model, canopy_model_restore(model), "restore");
+    check
+    (
+        model,
+        canopy_model_set_pressure_jump(model, dp.data(), nt),
+        "set_pressure_jump"
+    );
+    int substeps = 0;
+    const canopy_status st = canopy_model_advance
+    (
+        model, mesh_.time().deltaTValue(), &substeps
+    );
+    if (st != CANOPY_OK)
+    {
+        FatalErrorInFunction
+            << "The structure's time step failed at t = "
+            << mesh_.time().timeName() << ": " << canopy_model_message(model)
+            << exit(FatalError);
+    }
+    subSteps_ = substeps;
+    ++structureSolves_;
+
+    scalarField target(nt);
+    check
+    (
+        model,
+        canopy_model_get_normal_velocities(model, target.data(), nt),
+        "get_normal_velocities"
+    );
+    check
+    (
+        model,
+        canopy_model_get_triangle_velocities
+        (
+            model, reinterpret_cast<double*>(triangleVelocity_.data()), nt
+        ),
+        "get_triangle_velocities"
+    );
+
+    const scalar scale = max(Uref_, nt ? max(mag(target)) : 0);
+    if (scheme_ == scheme::strong)
+    {
+        residual_ = aitken_.relax(normalVelocity_, target)/scale;
+        converged_ = residual_ < tolerance_ && slip_ < tolerance_;
+    }
+    else
+    {
+        residual_ = (nt ? max(mag(target - normalVelocity_)) : 0)/scale;
+        normalVelocity_ = target;
+        converged_ = true;
+    }
+
+    markers_->update(model);
+    updateStencils();
+
+    Info<< "canopyCoupling: iteration " << iteration_
+        << ", interface residual " << residual_
+        << ", slip " << slip_
+        << ", relaxation " << aitken_.omega()
+        << ", structure sub-steps " << substeps
+        << ", pressure force " << pressureForce_
+        << ", IB force " << rho_*markerForce_ << endl;
+
+    return converged_;
+}
+
+
+void Foam::canopyCoupling::endTimeStep()
+{
+    check(structure_.model(), canopy_model_commit(structure_.model()), "commit");
+    if (scheme_ == scheme::strong && !converged_)
+    {
+        WarningInFunction
+            << "coupling not converged at t = " << mesh_.time().timeName()
+            << " after " << iteration_ << " iterations (residual "
+            << residual_ << ", tolerance " << tolerance_ << ")" << endl;
+    }
+    writeSeries();
+    if (mesh_.time().writeTime())
+    {
+        structure_.write(mesh_.time());
+    }
+}

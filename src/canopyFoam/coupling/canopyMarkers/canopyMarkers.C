@@ -1,0 +1,191 @@
+/*---------------------------------------------------------------------------*\
+    canopyFoam: canopyMarkers.C — immersed-boundary markers on canopy triangles.
+\*---------------------------------------------------------------------------*/
+
+#include "canopyMarkers.H"
+#include "canopy.h"
+#include "error.H"
+
+namespace
+{
+
+// Barycentric centroids of the 4^level sub-triangles of (a, b, c), given as
+// barycentric corner coordinates, appended to `out`.
+void subdivide
+(
+    const Foam::FixedList<Foam::scalar, 3>& a,
+    const Foam::FixedList<Foam::scalar, 3>& b,
+    const Foam::FixedList<Foam::scalar, 3>& c,
+    const int level,
+    Foam::DynamicList<Foam::FixedList<Foam::scalar, 3>>& out
+)
+{
+    using Foam::FixedList;
+    using Foam::scalar;
+    if (level == 0)
+    {
+        FixedList<scalar, 3> g;
+        for (int d = 0; d < 3; ++d)
+        {
+            g[d] = (a[d] + b[d] + c[d])/3.0;
+        }
+        out.append(g);
+        return;
+    }
+    FixedList<scalar, 3> ab, bc, ca;
+    for (int d = 0; d < 3; ++d)
+    {
+        ab[d] = 0.5*(a[d] + b[d]);
+        bc[d] = 0.5*(b[d] + c[d]);
+        ca[d] = 0.5*(c[d] + a[d]);
+    }
+    subdivide(a, ab, ca, level - 1, out);
+    subdivide(ab, b, bc, level - 1, out);
+    subdivide(ca, bc, c, level - 1, out);
+    subdivide(ab, bc, ca, level - 1, out);
+}
+
+} // End anonymous namespace
+
+
+Foam::canopyMarkers::canopyMarkers
+(
+    const canopy_model* model,
+    const scalar spacing
+)
+{
+    if (!(spacing > 0))
+    {
+        FatalErrorInFunction
+            << "marker spacing " << spacing << " must be > 0"
+            << exit(FatalError);
+    }
+    const int n = canopy_model_node_count(model);
+    const int nt = canopy_model_triangle_count(model);
+    List<double> x(3*n);
+    List<int> tri(3*nt);
+    canopy_model_get_positions(model, x.data(), n);
+    canopy_model_get_triangles(model, tri.data(), nt);
+
+    DynamicList<label> parent;
+    DynamicList<FixedList<scalar, 3>> bary;
+    DynamicList<scalar> fraction;
+    triangleStart_.setSize(nt + 1);
+
+    const FixedList<scalar, 3> e0({1, 0, 0}), e1({0, 1, 0}), e2({0, 0, 1});
+    for (int t = 0; t < nt; ++t)
+    {
+        triangleStart_[t] = parent.size();
+        scalar longest = 0;
+        for (int k = 0; k < 3; ++k)
+        {
+            const int i = tri[3*t + k], j = tri[3*t + (k + 1) % 3];
+            const vector d(x[3*j] - x[3*i], x[3*j+1] - x[3*i+1], x[3*j+2] - x[3*i+2]);
+            longest = max(longest, mag(d));
+        }
+        int level = 0;
+        while (level < 5 && longest/Foam::pow(2.0, level) > spacing)
+        {
+            ++level;
+        }
+        DynamicList<FixedList<scalar, 3>> sub;
+        subdivide(e0, e1, e2, level, sub);
+        forAll(sub, s)
+        {
+            parent.append(t);
+            bary.append(sub[s]);
+            fraction.append(1.0/sub.size());
+        }
+    }
+    triangleStart_[nt] = parent.size();
+
+    triangle_.transfer(parent);
+    barycentric_.transfer(bary);
+    fraction_.transfer(fraction);
+    points_.setSize(triangle_.size());
+    normals_.setSize(triangle_.size());
+    areas_.setSize(triangle_.size());
+    update(model);
+}
+
+
+void Foam::canopyMarkers::update(const canopy_model* model)
+{
+    const int n = canopy_model_node_count(model);
+    const int nt = canopy_model_triangle_count(model);
+    List<double> x(3*n);
+    List<int> tri(3*nt);
+    List<double> normal(3*nt), area(nt);
+    canopy_model_get_positions(model, x.data(), n);
+    canopy_model_get_triangles(model, tri.data(), nt);
+    canopy_model_get_triangle_geometry
+    (
+        model, nullptr, normal.data(), area.data(), nt
+    );
+
+    forAll(triangle_, m)
+    {
+        const label t = triangle_[m];
+        point p(Zero);
+        for (int k = 0; k < 3; ++k)
+        {
+            const int i = tri[3*t + k];
+            p += barycentric_[m][k]*point(x[3*i], x[3*i+1], x[3*i+2]);
+        }
+        points_[m] = p;
+        normals_[m] = vector(normal[3*t], normal[3*t+1], normal[3*t+2]);
+        areas_[m] = fraction_[m]*area[t];
+    }
+}
+
+
+Foam::tmp<Foam::scalarField> Foam::canopyMarkers::triangleAverage
+(
+    const scalarField& markerValues
+) const
+{
+    const label nt = triangleStart_.size() - 1;
+    tmp<scalarField> tresult(new scalarField(nt, Zero));
+    scalarField& result = tresult.ref();
+    for (label t = 0; t < nt; ++t)
+    {
+        scalar sumA = 0, sumV = 0;
+        for (label m = triangleStart_[t]; m < triangleStart_[t + 1]; ++m)
+        {
+            sumA += areas_[m];
+            sumV += areas_[m]*markerValues[m];
+        }
+        result[t] = sumA > VSMALL ? sumV/sumA : 0;
+    }
+    return tresult;
+}
+
+
+Foam::tmp<Foam::scalarField> Foam::canopyMarkers::toMarkers
+(
+    const scalarField& triangleValues
+) const
+{
+    tmp<scalarField> tresult(new scalarField(triangle_.size()));
+    scalarField& result = tresult.ref();
+    forAll(triangle_, m)
+    {
+        result[m] = triangleValues[triangle_[m]];
+    }
+    return tresult;
+}
+
+
+Foam::tmp<Foam::vectorField> Foam::canopyMarkers::toMarkers
+(
+    const vectorField& triangleValues
+) const
+{
+    tmp<vectorField> tresult(new vectorField(triangle_.size()));
+    vectorField& result = tresult.ref();
+    forAll(triangle_, m)
+    {
+        result[m] = triangleValues[triangle_[m]];
+    }
+    return tresult;
+}

@@ -1,0 +1,90 @@
+/*---------------------------------------------------------------------------*\
+    canopyFoam: ibStencilTemplates.C — interpolation to the markers and
+    spreading from them, for any field type.
+\*---------------------------------------------------------------------------*/
+
+#include "ibStencil.H"
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class Type>
+void Foam::ibStencil::interpolate
+(
+    const UList<Type>& cellValues,
+    List<Type>& markerValues
+) const
+{
+    if (cellValues.size() != mesh_.nCells())
+    {
+        FatalErrorInFunction
+            << "Cell values of size " << cellValues.size()
+            << " for a mesh of " << mesh_.nCells() << " cells"
+            << exit(FatalError);
+    }
+
+    markerValues.setSize(nMarkers_);
+
+    for (label m = 0; m < nMarkers_; ++m)
+    {
+        Type sum(Zero);
+        for (label k = offsets_[m]; k < offsets_[m + 1]; ++k)
+        {
+            sum += weights_[k]*cellValues[cells_[k]];
+        }
+        markerValues[m] = sum;
+    }
+
+    // Every rank calls this, with or without local stencil entries
+    Pstream::listCombineGather(markerValues, plusEqOp<Type>());
+    Pstream::listCombineScatter(markerValues);
+}
+
+
+template<class Type>
+Foam::tmp<Foam::Field<Type>> Foam::ibStencil::interpolate
+(
+    const GeometricField<Type, fvPatchField, volMesh>& vf
+) const
+{
+    auto tresult = tmp<Field<Type>>::New(nMarkers_);
+    interpolate(vf.primitiveField(), tresult.ref());
+    return tresult;
+}
+
+
+template<class Type>
+void Foam::ibStencil::spread
+(
+    const UList<Type>& markerValues,
+    UList<Type>& cellField
+) const
+{
+    if (markerValues.size() != nMarkers_)
+    {
+        FatalErrorInFunction
+            << "Marker values of size " << markerValues.size()
+            << " for " << nMarkers_ << " markers" << exit(FatalError);
+    }
+    if (cellField.size() != mesh_.nCells())
+    {
+        FatalErrorInFunction
+            << "Cell field of size " << cellField.size()
+            << " for a mesh of " << mesh_.nCells() << " cells"
+            << exit(FatalError);
+    }
+
+    const scalarField& V = mesh_.cellVolumes();
+
+    for (label m = 0; m < nMarkers_; ++m)
+    {
+        const Type& F = markerValues[m];
+        for (label k = offsets_[m]; k < offsets_[m + 1]; ++k)
+        {
+            const label celli = cells_[k];
+            cellField[celli] += (weights_[k]/V[celli])*F;
+        }
+    }
+}
+
+
+// ************************************************************************* //

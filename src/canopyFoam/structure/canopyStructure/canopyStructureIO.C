@@ -1,0 +1,597 @@
+// canopyStructureIO.C: canopyStructure output (HDF5 + XDMF through libcanopy, master rank only) and restart (readState, stateAvailable).
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | canopyFoam: parachute fluid-structure interaction
+   \\    /   O peration     | for OpenFOAM v1912
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of canopyFoam, a plugin for OpenFOAM, and like OpenFOAM
+    is distributed under the GNU General Public License version 3 or later.
+
+Description
+    Writing goes through canopy_output (canopy.h). To restart at a given
+    time, the step holding that time is looked up in the file's documented
+    layout (/steps/NNNNNN groups with a scalar attribute 'time') with the
+    HDF5 C library, read-only, and then loaded with
+    canopy_model_read_state. In parallel the master also reads that step's
+    nodal forces (/steps/NNNNNN/f_ext), which libcanopy has no getter for,
+    and broadcasts the whole state.
+
+\*---------------------------------------------------------------------------*/
+
+#include "canopyStructure.H"
+#include "Time.H"
+#include "OSspecific.H"
+#include "OStringStream.H"
+#include "Pstream.H"
+
+#include "canopy.h"
+#include <hdf5.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * * //
+
+namespace
+{
+
+// HDF5's automatic error printing off for the lifetime of the object
+class hdf5Quiet
+{
+    H5E_auto2_t func_;
+    void* data_;
+
+public:
+
+    hdf5Quiet()
+    :
+        func_(nullptr),
+        data_(nullptr)
+    {
+        H5Eget_auto2(H5E_DEFAULT, &func_, &data_);
+        H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+    }
+
+    ~hdf5Quiet()
+    {
+        H5Eset_auto2(H5E_DEFAULT, func_, data_);
+    }
+
+    hdf5Quiet(const hdf5Quiet&) = delete;
+    void operator=(const hdf5Quiet&) = delete;
+};
+
+
+// An open HDF5 object, closed with the given function
+class hdf5Handle
+{
+    hid_t id_;
+    herr_t (*close_)(hid_t);
+
+public:
+
+    hdf5Handle(hid_t id, herr_t (*close)(hid_t))
+    :
+        id_(id),
+        close_(close)
+    {}
+
+    ~hdf5Handle()
+    {
+        if (id_ >= 0) close_(id_);
+    }
+
+    hdf5Handle(const hdf5Handle&) = delete;
+    void operator=(const hdf5Handle&) = delete;
+
+    hid_t id() const { return id_; }
+    bool valid() const { return id_ >= 0; }
+};
+
+
+struct outputStep
+{
+    std::string name;   // NNNNNN
+    int number;
+    double time;
+};
+
+
+// Open path.h5 read-only (no file locking, as libcanopy does, so a file
+// open for writing elsewhere can be read)
+hid_t openReadOnly(const std::string& h5)
+{
+    hid_t fapl = H5Pcreate(H5P_FILE_ACCESS);
+    if (fapl < 0) return -1;
+#if H5_VERSION_GE(1, 10, 7)
+    H5Pset_file_locking(fapl, 0, 1);
+#endif
+    const hid_t file = H5Fopen(h5.c_str(), H5F_ACC_RDONLY, fapl);
+    H5Pclose(fapl);
+    return file;
+}
+
+
+// The steps of an output file (name, number, time); false with a message
+// when the file cannot be read
+bool listSteps
+(
+    const std::string& h5,
+    std::vector<outputStep>& steps,
+    std::string& message
+)
+{
+    steps.clear();
+    const hdf5Quiet quiet;
+
+    if (!Foam::isFile(h5))
+    {
+        message = "'" + h5 + "' does not exist";
+        return false;
+    }
+    const hdf5Handle file(openReadOnly(h5), H5Fclose);
+    if (!file.valid())
+    {
+        message = "cannot open '" + h5 + "' (unreadable or not HDF5)";
+        return false;
+    }
+    if (H5Lexists(file.id(), "steps", H5P_DEFAULT) <= 0)
+    {
+        return true;    // no steps yet
+    }
+    const hdf5Handle group(H5Gopen2(file.id(), "steps", H5P_DEFAULT), H5Gclose);
+    H5G_info_t info;
+    if (!group.valid() || H5Gget_info(group.id(), &info) < 0)
+    {
+        message = "cannot list /steps in '" + h5 + "'";
+        return false;
+    }
+    for (hsize_t i = 0; i < info.nlinks; ++i)
+    {
+        char name[64];
+        const ssize_t len = H5Lget_name_by_idx
+        (
+            group.id(), ".", H5_INDEX_NAME, H5_ITER_INC, i, name,
+            sizeof(name), H5P_DEFAULT
+        );
+        if (len <= 0 || len >= ssize_t(sizeof(name)) || len > 9)
+        {
+            continue;
+        }
+        bool digits = true;
+        int number = 0;
+        for (ssize_t c = 0; c < len; ++c)
+        {
+            digits = digits && name[c] >= '0' && name[c] <= '9';
+            number = 10*number + (name[c] - '0');
+        }
+        if (!digits)
+        {
+            continue;   // not a step group
+        }
+        const hdf5Handle step(H5Gopen2(group.id(), name, H5P_DEFAULT), H5Gclose);
+        double t = 0;
+        bool ok = false;
+        if (step.valid())
+        {
+            const hdf5Handle attr(H5Aopen(step.id(), "time", H5P_DEFAULT), H5Aclose);
+            ok = attr.valid()
+              && H5Aread(attr.id(), H5T_NATIVE_DOUBLE, &t) >= 0;
+        }
+        if (!ok)
+        {
+            message =
+                "'" + h5 + "': /steps/" + name + " has no readable attribute"
+                " 'time'";
+            return false;
+        }
+        steps.push_back(outputStep{std::string(name), number, t});
+    }
+    return true;
+}
+
+
+// The n x 3 dataset /steps/<name>/f_ext
+bool readNodalForces
+(
+    const std::string& h5,
+    const std::string& stepName,
+    const int n,
+    std::vector<double>& f,
+    std::string& message
+)
+{
+    const hdf5Quiet quiet;
+    const std::string path = "/steps/" + stepName + "/f_ext";
+    f.assign(3*std::size_t(n), 0.0);
+    const hdf5Handle file(openReadOnly(h5), H5Fclose);
+    const hdf5Handle set
+    (
+        file.valid() ? H5Dopen2(file.id(), path.c_str(), H5P_DEFAULT) : -1,
+        H5Dclose
+    );
+    if (!set.valid())
+    {
+        message = "cannot open " + path + " in '" + h5 + "'";
+        return false;
+    }
+    const hdf5Handle space(H5Dget_space(set.id()), H5Sclose);
+    hsize_t dims[2] = {0, 0};
+    if
+    (
+        !space.valid()
+     || H5Sget_simple_extent_ndims(space.id()) != 2
+     || H5Sget_simple_extent_dims(space.id(), dims, nullptr) != 2
+     || dims[0] != hsize_t(n) || dims[1] != 3
+    )
+    {
+        message = path + " in '" + h5 + "' is not " + std::to_string(n) + " x 3";
+        return false;
+    }
+    if
+    (
+        n > 0
+     && H5Dread
+        (
+            set.id(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT,
+            f.data()
+        ) < 0
+    )
+    {
+        message = "cannot read " + path + " in '" + h5 + "'";
+        return false;
+    }
+    return true;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::scalar Foam::canopyStructure::timeTolerance(const Time& runTime)
+{
+    const scalar t = runTime.value();
+    return max(0.5*runTime.deltaTValue(), 1e-9*max(1.0, mag(t)));
+}
+
+
+Foam::label Foam::canopyStructure::findStep
+(
+    const fileName& h5,
+    const scalar t,
+    const scalar tol,
+    scalar& stepTime,
+    std::string& stepName,
+    std::string& message
+) const
+{
+    std::vector<outputStep> steps;
+    if (!listSteps(h5, steps, message))
+    {
+        return -1;
+    }
+    label best = -1;
+    for (std::size_t s = 0; s < steps.size(); ++s)
+    {
+        if
+        (
+            mag(steps[s].time - t) <= tol
+         && (best < 0 || mag(steps[s].time - t) < mag(steps[best].time - t))
+        )
+        {
+            best = label(s);
+        }
+    }
+    if (best < 0)
+    {
+        OStringStream os;
+        os  << "'" << h5.c_str() << "' holds no step at time " << t
+            << " (tolerance " << tol << "); ";
+        if (steps.empty())
+        {
+            os  << "it holds no steps";
+        }
+        else
+        {
+            scalar tMin = steps[0].time, tMax = steps[0].time;
+            label nearest = 0;
+            for (std::size_t s = 0; s < steps.size(); ++s)
+            {
+                tMin = min(tMin, steps[s].time);
+                tMax = max(tMax, steps[s].time);
+                if (mag(steps[s].time - t) < mag(steps[nearest].time - t))
+                {
+                    nearest = label(s);
+                }
+            }
+            os  << steps.size() << " steps from t = " << tMin << " to "
+                << tMax << ", the nearest at t = " << steps[nearest].time;
+        }
+        message = os.str();
+        return -1;
+    }
+    stepTime = steps[best].time;
+    stepName = steps[best].name;
+    return steps[best].number;
+}
+
+
+bool Foam::canopyStructure::openOutput
+(
+    const fileName& path,
+    const int mode,
+    string& message
+)
+{
+    output_.reset();
+    mkDir(path.path());
+    canopy_output* o = nullptr;
+    if
+    (
+        canopy_output_create
+        (
+            model_.get(), path.c_str(), static_cast<canopy_output_mode>(mode),
+            &o
+        )
+     != CANOPY_OK
+    )
+    {
+        message =
+            "libcanopy cannot "
+          + std::string(mode == CANOPY_OUTPUT_APPEND ? "append to" : "create")
+          + " the output " + path + ".h5: "
+          + canopy_model_message(model_.get());
+        return false;
+    }
+    output_.reset(o);
+    return true;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::fileName Foam::canopyStructure::outputPath(const Time& runTime)
+{
+    return runTime.globalPath()/"postProcessing"/"canopy"/"canopy";
+}
+
+
+bool Foam::canopyStructure::write(const Time& runTime)
+{
+    const scalar t = time();
+
+    if (!warnedTime_ && mag(t - runTime.value()) > timeTolerance(runTime))
+    {
+        WarningInFunction
+            << "The structure's time " << t << " differs from the run time "
+            << runTime.value() << "; the output step is stamped with the "
+            << "structure's time" << endl;
+        warnedTime_ = true;
+    }
+
+    // This state is already the last step in the file
+    if (haveLastWrite_ && mag(t - lastWriteTime_) <= 1e-12*max(1.0, mag(t)))
+    {
+        return false;
+    }
+
+    if (Pstream::master())
+    {
+        const fileName path(outputPath(runTime));
+        string message;
+        if
+        (
+            !output_
+         && !openOutput
+            (
+                path,
+                restarted_ ? CANOPY_OUTPUT_APPEND : CANOPY_OUTPUT_CREATE,
+                message
+            )
+        )
+        {
+            FatalErrorInFunction
+                << message.c_str() << nl << exit(FatalError);
+        }
+        if (canopy_output_write(output_.get(), model_.get()) != CANOPY_OK)
+        {
+            FatalErrorInFunction
+                << "libcanopy cannot write the step at time " << t << " to "
+                << path << ".h5: " << canopy_output_message(output_.get())
+                << nl << exit(FatalError);
+        }
+    }
+
+    lastWriteTime_ = t;
+    haveLastWrite_ = true;
+    return true;
+}
+
+
+bool Foam::canopyStructure::stateAvailable
+(
+    const Time& runTime,
+    const scalar tolerance
+) const
+{
+    bool found = false;
+    if (Pstream::master())
+    {
+        const scalar tol = tolerance >= 0 ? tolerance : timeTolerance(runTime);
+        scalar stepTime = 0;
+        std::string stepName, message;
+        found =
+            findStep
+            (
+                outputPath(runTime) + ".h5", runTime.value(), tol, stepTime,
+                stepName, message
+            ) >= 0;
+    }
+    Pstream::scatter(found);
+    return found;
+}
+
+
+void Foam::canopyStructure::readState
+(
+    const Time& runTime,
+    const scalar tolerance
+)
+{
+    const scalar t = runTime.value();
+    const scalar tol = tolerance >= 0 ? tolerance : timeTolerance(runTime);
+    const fileName path(outputPath(runTime));
+    const fileName h5(path + ".h5");
+
+    // Reopened below in APPEND mode
+    output_.reset();
+
+    const int n = nNodes();
+    const int nt = nTriangles();
+
+    bool ok = true;
+    string message;
+    scalar stepTime = 0;
+    List<scalar> x, v, f, dp, acc;
+    label accValid = 0;
+
+    if (Pstream::master())
+    {
+        std::string stepName, findMessage;
+        const label number =
+            findStep(h5, t, tol, stepTime, stepName, findMessage);
+        if (number < 0)
+        {
+            ok = false;
+            message = "cannot restart the structure at time "
+                + Foam::name(t) + ": " + findMessage;
+        }
+        else if
+        (
+            canopy_model_read_state(model_.get(), path.c_str(), number)
+         != CANOPY_OK
+        )
+        {
+            ok = false;
+            message = "cannot restart the structure at time "
+                + Foam::name(t) + " from step " + stepName + " of '" + h5
+                + "': " + canopy_model_message(model_.get());
+        }
+        else if (!openOutput(path, CANOPY_OUTPUT_APPEND, message))
+        {
+            ok = false;
+        }
+        else if (Pstream::parRun())
+        {
+            // The state to broadcast: what read_state loaded
+            std::vector<double> fExt;
+            std::string fMessage;
+            if (!readNodalForces(h5, stepName, n, fExt, fMessage))
+            {
+                ok = false;
+                message = "cannot restart the structure: " + fMessage;
+            }
+            else
+            {
+                x.setSize(3*n);
+                v.setSize(3*n);
+                acc.setSize(3*n);
+                dp.setSize(nt);
+                f.setSize(3*n);
+                forAll(f, i)
+                {
+                    f[i] = fExt[i];
+                }
+                int valid = 0;
+                check
+                (
+                    canopy_model_get_positions(model_.get(), x.begin(), n),
+                    FUNCTION_NAME, "canopy_model_get_positions"
+                );
+                check
+                (
+                    canopy_model_get_velocities(model_.get(), v.begin(), n),
+                    FUNCTION_NAME, "canopy_model_get_velocities"
+                );
+                check
+                (
+                    canopy_model_get_acceleration_state
+                    (
+                        model_.get(), acc.begin(), n, &valid
+                    ),
+                    FUNCTION_NAME, "canopy_model_get_acceleration_state"
+                );
+                check
+                (
+                    canopy_model_get_pressure_jump(model_.get(), dp.begin(), nt),
+                    FUNCTION_NAME, "canopy_model_get_pressure_jump"
+                );
+                accValid = valid;
+                stepTime = time();
+            }
+        }
+        else
+        {
+            stepTime = time();
+        }
+    }
+
+    Pstream::scatter(ok);
+    Pstream::scatter(message);
+    if (!ok)
+    {
+        FatalErrorInFunction
+            << message.c_str() << nl << exit(FatalError);
+    }
+
+    if (Pstream::parRun())
+    {
+        Pstream::scatter(stepTime);
+        Pstream::scatter(x);
+        Pstream::scatter(v);
+        Pstream::scatter(acc);
+        Pstream::scatter(accValid);
+        Pstream::scatter(dp);
+        Pstream::scatter(f);
+
+        if (!Pstream::master())
+        {
+            canopy_model* m = model_.get();
+            // Positions and velocities first: setting them clears the
+            // carried acceleration, which is restored after
+            check(canopy_model_set_positions(m, x.cdata(), n), FUNCTION_NAME, "canopy_model_set_positions");
+            check(canopy_model_set_velocities(m, v.cdata(), n), FUNCTION_NAME, "canopy_model_set_velocities");
+            check
+            (
+                canopy_model_set_acceleration_state(m, acc.cdata(), n, accValid),
+                FUNCTION_NAME, "canopy_model_set_acceleration_state"
+            );
+            check(canopy_model_set_pressure_jump(m, dp.cdata(), nt), FUNCTION_NAME, "canopy_model_set_pressure_jump");
+            check(canopy_model_set_nodal_forces(m, f.cdata(), n), FUNCTION_NAME, "canopy_model_set_nodal_forces");
+            check(canopy_model_set_time(m, stepTime), FUNCTION_NAME, "canopy_model_set_time");
+        }
+
+        if (!identicalOnAllRanks())
+        {
+            FatalErrorInFunction
+                << "After restarting from " << h5 << " at time " << t
+                << " the structure differs between ranks" << nl
+                << exit(FatalError);
+        }
+    }
+
+    restarted_ = true;
+    lastWriteTime_ = stepTime;
+    haveLastWrite_ = true;
+
+    Info<< "canopyStructure: restarted from " << h5 << " at time "
+        << stepTime << endl;
+}
+
+
+// ************************************************************************* //
