@@ -35,6 +35,18 @@ Description
         constant/transportProperties, constant/turbulenceProperties
         system/fvSolution (PIMPLE), system/fvSchemes, system/controlDict
 
+    Divergence
+        When the structure's step fails (NaN, runaway speed, implicit solve)
+        or the coupling has not converged when the outer loop ends (with
+        coupling.stopIfNotConverged, the default), the fields and the
+        structure are written at the last good time (the start of the
+        failed step) and the run stops with the reason. A canopy leaving
+        the mesh stops the run with a message naming the marker.
+
+    Restart
+        startFrom latestTime continues from the written fields, the IB
+        force (canopyForce) and the structure's state at that time.
+
     Output
         canopyForce (the IB force density, written with the fields);
         postProcessing/canopy/canopy.h5 + .xdmf (the structure, ParaView);
@@ -82,6 +94,9 @@ int main(int argc, char *argv[])
         #include "CourantNo.H"
         #include "setDeltaT.H"
 
+        // The last good state, written if this step fails
+        #include "storeLastGoodState.H"
+
         ++runTime;
 
         Info<< "Time = " << runTime.timeName() << nl << endl;
@@ -111,7 +126,10 @@ int main(int argc, char *argv[])
             }
         }
 
-        coupling.endTimeStep();
+        if (!coupling.endTimeStep())
+        {
+            #include "writeLastGoodStateAndStop.H"
+        }
 
         runTime.write();
 

@@ -91,7 +91,8 @@ void Foam::canopyCoupling::writeSeries()
     {
         const fileName dir
         (
-            runTime.globalPath()/"postProcessing"/"canopy"/runTime.timeName()
+            runTime.globalPath()/"postProcessing"/"canopy"
+           /runTime.timeName(runTime.startTime().value())
         );
         mkDir(dir);
         series_.reset(new OFstream(dir/"canopy.dat"));
@@ -145,7 +146,7 @@ Foam::canopyCoupling::canopyCoupling
             "canopyForce",
             mesh.time().timeName(),
             mesh,
-            IOobject::NO_READ,
+            IOobject::READ_IF_PRESENT,
             IOobject::AUTO_WRITE
         ),
         mesh,
@@ -158,7 +159,9 @@ Foam::canopyCoupling::canopyCoupling
     subSteps_(0),
     markerForce_(Zero),
     pressureForce_(Zero),
-    slip_(0)
+    slip_(0),
+    stopIfNotConverged_(true),
+    failure_()
 {
     const dictionary& dict = structure_.dict().subOrEmptyDict("coupling");
 
@@ -190,6 +193,7 @@ Foam::canopyCoupling::canopyCoupling
     tolerance_ = dict.getOrDefault<scalar>("tolerance", 1e-3);
     Uref_ = dict.getOrDefault<scalar>("Uref", 1);
     const scalar omega0 = dict.getOrDefault<scalar>("initialRelaxation", 0.5);
+    stopIfNotConverged_ = dict.getOrDefault<bool>("stopIfNotConverged", true);
 
     const word tangential(dict.getOrDefault<word>("tangential", "noSlip"));
     if (tangential != "noSlip" && tangential != "free")
@@ -236,6 +240,26 @@ Foam::canopyCoupling::canopyCoupling
             << " must be > 0" << exit(FatalIOError);
     }
 
+    // A restart continues from the structure's state at the start time
+    const Time& runTime = mesh.time();
+    if (runTime.value() != 0)
+    {
+        if (structure_.stateAvailable(runTime))
+        {
+            Info<< "canopyCoupling: restarting the structure from its state"
+                << " at t = " << runTime.timeName() << " in "
+                << canopyStructure::outputPath(runTime) << ".h5" << endl;
+            structure_.readState(runTime);
+        }
+        else
+        {
+            WarningInFunction
+                << "No structure state at the start time " << runTime.timeName()
+                << " in " << canopyStructure::outputPath(runTime) << ".h5:"
+                << " the canopy starts from its initial shape" << endl;
+        }
+    }
+
     markers_.reset(new canopyMarkers(structure_.model(), spacing));
     velocityStencil_.reset(new ibStencil(mesh, kernel_()));
     plusStencil_.reset(new ibStencil(mesh, kernel_()));
@@ -280,6 +304,7 @@ Foam::canopyCoupling::canopyCoupling
 
 void Foam::canopyCoupling::beginTimeStep()
 {
+    failure_.clear();
     check
     (
         structure_.model(),
@@ -397,17 +422,16 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
         canopy_model_set_pressure_jump(model, dp.data(), nt),
         "set_pressure_jump"
     );
-    int substeps = 0;
-    const canopy_status st = canopy_model_advance
-    (
-        model, mesh_.time().deltaTValue(), &substeps
-    );
-    if (st != CANOPY_OK)
+    label substeps = 0;
+    string message;
+    if (!structure_.tryAdvance(mesh_.time().deltaTValue(), substeps, message))
     {
-        FatalErrorInFunction
-            << "The structure's time step failed at t = "
-            << mesh_.time().timeName() << ": " << canopy_model_message(model)
-            << exit(FatalError);
+        failure_ =
+            "the structure's time step to t = " + mesh_.time().timeName()
+          + " failed (coupling iteration " + Foam::name(iteration_) + "): "
+          + message;
+        converged_ = true;      // ends the outer loop
+        return true;
     }
     subSteps_ = substeps;
     ++structureSolves_;
@@ -433,7 +457,7 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
     if (scheme_ == scheme::strong)
     {
         residual_ = aitken_.relax(normalVelocity_, target)/scale;
-        converged_ = residual_ < tolerance_ && slip_ < tolerance_;
+        converged_ = residual_ < tolerance_;
     }
     else
     {
@@ -457,19 +481,63 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
 }
 
 
-void Foam::canopyCoupling::endTimeStep()
+bool Foam::canopyCoupling::endTimeStep()
 {
-    check(structure_.model(), canopy_model_commit(structure_.model()), "commit");
-    if (scheme_ == scheme::strong && !converged_)
+    if (!failed() && scheme_ == scheme::strong && !converged_)
     {
-        WarningInFunction
-            << "coupling not converged at t = " << mesh_.time().timeName()
-            << " after " << iteration_ << " iterations (residual "
-            << residual_ << ", tolerance " << tolerance_ << ")" << endl;
+        const string text =
+            "the coupling did not converge at t = " + mesh_.time().timeName()
+          + " in " + Foam::name(iteration_) + " iterations (residual "
+          + Foam::name(residual_) + ", slip " + Foam::name(slip_)
+          + ", tolerance " + Foam::name(tolerance_) + ")";
+        if (stopIfNotConverged_)
+        {
+            failure_ = text;
+        }
+        else
+        {
+            WarningInFunction << text.c_str() << endl;
+        }
     }
+    if (failed())
+    {
+        // Back to the last good state (the start of this step)
+        check(structure_.model(), canopy_model_restore(structure_.model()), "restore");
+        check(structure_.model(), canopy_model_commit(structure_.model()), "commit");
+        return false;
+    }
+
+    check(structure_.model(), canopy_model_commit(structure_.model()), "commit");
+
+    // The next step starts from the committed structure's interface
+    // velocity (not the relaxed iterate), so that a restart, which knows
+    // only the structure's state, continues exactly
+    const int nt = normalVelocity_.size();
+    check
+    (
+        structure_.model(),
+        canopy_model_get_normal_velocities
+        (
+            structure_.model(), normalVelocity_.data(), nt
+        ),
+        "get_normal_velocities"
+    );
     writeSeries();
     if (mesh_.time().writeTime())
     {
         structure_.write(mesh_.time());
     }
+    return true;
+}
+
+
+void Foam::canopyCoupling::writeStructure()
+{
+    structure_.write(mesh_.time());
+}
+
+
+void Foam::canopyCoupling::restoreForce(const volVectorField& force)
+{
+    force_ == force;
 }

@@ -49,7 +49,12 @@ void Foam::fv::canopyImmersedBoundary::addSup
         (
             mesh_.lookupObject<volScalarField>(pName_)
         );
-        coupling_.endTimeStep();
+        if (!coupling_.endTimeStep())
+        {
+            FatalErrorInFunction
+                << "Stopping: " << coupling_.failure().c_str()
+                << exit(FatalError);
+        }
         timeIndex_ = index;
     }
     eqn += coupling_.force();
