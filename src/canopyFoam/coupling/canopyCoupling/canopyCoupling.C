@@ -6,23 +6,6 @@
 #include "canopyCoupling.H"
 #include "canopy.h"
 
-namespace
-{
-
-// Stop with libcanopy's message when a call fails.
-void check(const canopy_model* model, canopy_status st, const char* what)
-{
-    if (st != CANOPY_OK)
-    {
-        FatalErrorInFunction
-            << "libcanopy " << what << " failed: "
-            << canopy_model_message(model) << Foam::exit(Foam::FatalError);
-    }
-}
-
-} // End anonymous namespace
-
-
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 void Foam::canopyCoupling::updateStencils()
@@ -102,17 +85,20 @@ void Foam::canopyCoupling::writeSeries()
             << " canopy_area kinetic spring gravity coupling_iterations"
             << " residual slip substeps" << nl;
     }
-    canopy_model* model = structure_.model();
-    double x[3] = {0, 0, 0}, v[3] = {0, 0, 0};
-    canopy_model_payload_state(model, x, v);
-    double diameter = 0, area = 0;
-    canopy_model_projected_diameter(model, &diameter);
-    canopy_model_canopy_area(model, &area);
-    canopy_energies e;
-    canopy_model_energies(model, &e);
+    const point x
+    (
+        structure_.hasPayload() ? structure_.payloadPosition() : point::zero
+    );
+    const vector v
+    (
+        structure_.hasPayload() ? structure_.payloadVelocity() : vector::zero
+    );
+    const scalar diameter = structure_.projectedDiameter();
+    const scalar area = structure_.canopyArea();
+    const canopyStructure::energy e(structure_.energies());
     series_()
-        << runTime.value() << ' ' << x[0] << ' ' << x[1] << ' ' << x[2]
-        << ' ' << v[0] << ' ' << v[1] << ' ' << v[2]
+        << runTime.value() << ' ' << x.x() << ' ' << x.y() << ' ' << x.z()
+        << ' ' << v.x() << ' ' << v.y() << ' ' << v.z()
         << ' ' << pressureForce_.x() << ' ' << pressureForce_.y() << ' '
         << pressureForce_.z() << ' ' << diameter << ' ' << area
         << ' ' << e.kinetic << ' ' << e.spring << ' ' << e.gravity
@@ -266,28 +252,9 @@ Foam::canopyCoupling::canopyCoupling
     minusStencil_.reset(new ibStencil(mesh, kernel_()));
 
     // Interface velocity from the structure's initial state
-    const int nt = canopy_model_triangle_count(structure_.model());
-    normalVelocity_.setSize(nt);
-    triangleVelocity_.setSize(nt);
-    check
-    (
-        structure_.model(),
-        canopy_model_get_normal_velocities
-        (
-            structure_.model(), normalVelocity_.data(), nt
-        ),
-        "get_normal_velocities"
-    );
-    check
-    (
-        structure_.model(),
-        canopy_model_get_triangle_velocities
-        (
-            structure_.model(),
-            reinterpret_cast<double*>(triangleVelocity_.data()), nt
-        ),
-        "get_triangle_velocities"
-    );
+    const label nt = structure_.nTriangles();
+    normalVelocity_ = structure_.normalVelocities();
+    triangleVelocity_ = structure_.triangleVelocities();
     updateStencils();
 
     Info<< "canopyCoupling: "
@@ -305,12 +272,7 @@ Foam::canopyCoupling::canopyCoupling
 void Foam::canopyCoupling::beginTimeStep()
 {
     failure_.clear();
-    check
-    (
-        structure_.model(),
-        canopy_model_checkpoint(structure_.model()),
-        "checkpoint"
-    );
+    structure_.checkpoint();
     aitken_.reset();
     iteration_ = 0;
     structureSolves_ = 0;
@@ -404,24 +366,16 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
         return converged_;
     }
 
-    canopy_model* model = structure_.model();
     const canopyMarkers& mk = markers_();
 
     // Pressure jump dp = rho (p- - p+) per marker, then per triangle
     const scalarField pPlus(plusStencil_->interpolate(p));
     const scalarField pMinus(minusStencil_->interpolate(p));
     const scalarField dpMarker(rho_*(pMinus - pPlus));
-    scalarField dp(mk.triangleAverage(dpMarker));
     pressureForce_ = sum(dpMarker*mk.areas()*mk.normals());
 
-    const int nt = dp.size();
-    check(model, canopy_model_restore(model), "restore");
-    check
-    (
-        model,
-        canopy_model_set_pressure_jump(model, dp.data(), nt),
-        "set_pressure_jump"
-    );
+    structure_.restore();
+    structure_.setPressureJump(mk.triangleAverage(dpMarker));
     label substeps = 0;
     string message;
     if (!structure_.tryAdvance(mesh_.time().deltaTValue(), substeps, message))
@@ -436,22 +390,9 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
     subSteps_ = substeps;
     ++structureSolves_;
 
-    scalarField target(nt);
-    check
-    (
-        model,
-        canopy_model_get_normal_velocities(model, target.data(), nt),
-        "get_normal_velocities"
-    );
-    check
-    (
-        model,
-        canopy_model_get_triangle_velocities
-        (
-            model, reinterpret_cast<double*>(triangleVelocity_.data()), nt
-        ),
-        "get_triangle_velocities"
-    );
+    const scalarField target(structure_.normalVelocities());
+    triangleVelocity_ = structure_.triangleVelocities();
+    const label nt = target.size();
 
     const scalar scale = max(Uref_, nt ? max(mag(target)) : 0);
     if (scheme_ == scheme::strong)
@@ -466,7 +407,7 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
         converged_ = true;
     }
 
-    markers_->update(model);
+    markers_->update(structure_.model());
     updateStencils();
 
     Info<< "canopyCoupling: iteration " << iteration_
@@ -502,26 +443,17 @@ bool Foam::canopyCoupling::endTimeStep()
     if (failed())
     {
         // Back to the last good state (the start of this step)
-        check(structure_.model(), canopy_model_restore(structure_.model()), "restore");
-        check(structure_.model(), canopy_model_commit(structure_.model()), "commit");
+        structure_.restore();
+        structure_.commit();
         return false;
     }
 
-    check(structure_.model(), canopy_model_commit(structure_.model()), "commit");
+    structure_.commit();
 
     // The next step starts from the committed structure's interface
     // velocity (not the relaxed iterate), so that a restart, which knows
     // only the structure's state, continues exactly
-    const int nt = normalVelocity_.size();
-    check
-    (
-        structure_.model(),
-        canopy_model_get_normal_velocities
-        (
-            structure_.model(), normalVelocity_.data(), nt
-        ),
-        "get_normal_velocities"
-    );
+    normalVelocity_ = structure_.normalVelocities();
     writeSeries();
     if (mesh_.time().writeTime())
     {
