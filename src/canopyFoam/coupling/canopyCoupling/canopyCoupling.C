@@ -363,7 +363,7 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
     ++iteration_;
     if (scheme_ == scheme::explicitScheme && structureSolves_ > 0)
     {
-        return converged_;
+        return false;
     }
 
     const canopyMarkers& mk = markers_();
@@ -384,8 +384,8 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
             "the structure's time step to t = " + mesh_.time().timeName()
           + " failed (coupling iteration " + Foam::name(iteration_) + "): "
           + message;
-        converged_ = true;      // ends the outer loop
-        return true;
+        converged_ = true;
+        return true;            // ends the outer loop
     }
     subSteps_ = substeps;
     ++structureSolves_;
@@ -395,13 +395,17 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
     const label nt = target.size();
 
     const scalar scale = max(Uref_, nt ? max(mag(target)) : 0);
+    bool stop = false;
     if (scheme_ == scheme::strong)
     {
         residual_ = aitken_.relax(normalVelocity_, target)/scale;
         converged_ = residual_ < tolerance_;
+        stop = converged_;
     }
     else
     {
+        // Explicit: one structure solve per step; the PIMPLE outer loop
+        // runs its own course
         residual_ = (nt ? max(mag(target - normalVelocity_)) : 0)/scale;
         normalVelocity_ = target;
         converged_ = true;
@@ -418,7 +422,7 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
         << ", pressure force " << pressureForce_
         << ", IB force " << rho_*markerForce_ << endl;
 
-    return converged_;
+    return stop;
 }
 
 

@@ -84,7 +84,7 @@ Foam::canopyMarkers::canopyMarkers
             longest = max(longest, mag(d));
         }
         int level = 0;
-        while (level < 5 && longest/Foam::pow(2.0, level) > spacing)
+        while (level < 5 && longest/Foam::pow(2.0, level) > 1.5*spacing)
         {
             ++level;
         }
