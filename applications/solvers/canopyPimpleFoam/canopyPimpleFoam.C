@@ -36,12 +36,12 @@ Description
         system/fvSolution (PIMPLE), system/fvSchemes, system/controlDict
 
     Divergence
-        When the structure's step fails (NaN, runaway speed, implicit solve)
-        or the coupling has not converged when the outer loop ends (with
+        When the structure's step fails (NaN, runaway speed, implicit
+        solve), the canopy leaves the mesh (a marker without a stencil), or
+        the coupling has not converged when the outer loop ends (with
         coupling.stopIfNotConverged, the default), the fields and the
         structure are written at the last good time (the start of the
-        failed step) and the run stops with the reason. A canopy leaving
-        the mesh stops the run with a message naming the marker.
+        failed step) and the run stops with the reason.
 
     Restart
         startFrom latestTime continues from the written fields, the IB

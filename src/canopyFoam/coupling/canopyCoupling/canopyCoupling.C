@@ -8,7 +8,7 @@
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::canopyCoupling::updateStencils()
+Foam::string Foam::canopyCoupling::updateStencils()
 {
     const canopyMarkers& mk = markers_();
     velocityStencil_->update(mk.points());
@@ -39,14 +39,15 @@ void Foam::canopyCoupling::updateStencils()
         {
             if (!(*flags[s])[m])
             {
-                FatalErrorInFunction
-                    << "Marker " << m << " at " << mk.points()[m]
-                    << " has no " << names[s] << " stencil: the canopy is "
-                    << "leaving the mesh (or the mesh is too coarse near it)"
-                    << exit(FatalError);
+                OStringStream os;
+                os  << "marker " << m << " at " << mk.points()[m]
+                    << " has no " << names[s] << " stencil: the canopy is"
+                    << " leaving the mesh (or the mesh is too coarse near it)";
+                return os.str();
             }
         }
     }
+    return string();
 }
 
 
@@ -255,7 +256,12 @@ Foam::canopyCoupling::canopyCoupling
     const label nt = structure_.nTriangles();
     normalVelocity_ = structure_.normalVelocities();
     triangleVelocity_ = structure_.triangleVelocities();
-    updateStencils();
+    const string problem(updateStencils());
+    if (!problem.empty())
+    {
+        FatalErrorInFunction
+            << "At the start: " << problem.c_str() << exit(FatalError);
+    }
 
     Info<< "canopyCoupling: "
         << (scheme_ == scheme::strong ? "strong" : "explicit") << " coupling, "
@@ -412,7 +418,17 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
     }
 
     markers_->update(structure_.model());
-    updateStencils();
+    const string problem(updateStencils());
+    if (!problem.empty())
+    {
+        failure_ = "at t = " + mesh_.time().timeName() + ", " + problem;
+        // Markers and stencils back at the step's start for what follows
+        structure_.restore();
+        markers_->update(structure_.model());
+        updateStencils();
+        converged_ = true;
+        return true;            // ends the outer loop
+    }
 
     Info<< "canopyCoupling: iteration " << iteration_
         << ", interface residual " << residual_
