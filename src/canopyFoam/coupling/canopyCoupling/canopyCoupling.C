@@ -4,6 +4,8 @@
 \*---------------------------------------------------------------------------*/
 
 #include "canopyCoupling.H"
+#include "extrapolatedCalculatedFvPatchFields.H"
+#include "surfaceInterpolate.H"
 #include "canopy.h"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -342,6 +344,7 @@ Foam::tmp<Foam::volVectorField> Foam::canopyCoupling::forcingIncrement
 
     force_.primitiveFieldRef() += dForce.primitiveField();
     force_.correctBoundaryConditions();
+    faceForce_.clear();
     markerForce_ = sum(markerForce);
     slip_ = slip/max(Uref_, vn.size() ? max(mag(vn)) : 0);
     return tdForce;
@@ -358,9 +361,61 @@ void Foam::canopyCoupling::correctForcing
 }
 
 
-Foam::tmp<Foam::surfaceScalarField> Foam::canopyCoupling::faceForce() const
+const Foam::surfaceScalarField& Foam::canopyCoupling::faceForce() const
 {
-    return fvc::interpolate(force_) & mesh_.Sf();
+    if (!faceForce_.valid())
+    {
+        faceForce_.reset
+        (
+            new surfaceScalarField
+            (
+                "canopyFaceForce",
+                fvc::interpolate(force_) & mesh_.Sf()
+            )
+        );
+    }
+    return faceForce_();
+}
+
+
+Foam::tmp<Foam::volVectorField> Foam::canopyCoupling::reconstruct
+(
+    const surfaceScalarField& ssf
+) const
+{
+    if (!reconstructInverse_.valid())
+    {
+        SfHat_.reset
+        (
+            new surfaceVectorField("canopySfHat", mesh_.Sf()/mesh_.magSf())
+        );
+        reconstructInverse_.reset
+        (
+            new volTensorField
+            (
+                "canopyReconstructInverse",
+                inv(fvc::surfaceSum(SfHat_()*mesh_.Sf()))
+            )
+        );
+    }
+    tmp<volVectorField> tfield
+    (
+        new volVectorField
+        (
+            IOobject
+            (
+                "reconstruct(" + ssf.name() + ')',
+                ssf.instance(),
+                mesh_,
+                IOobject::NO_READ,
+                IOobject::NO_WRITE
+            ),
+            reconstructInverse_() & fvc::surfaceSum(SfHat_()*ssf),
+            extrapolatedCalculatedFvPatchField<vector>::typeName
+        )
+    );
+    tfield.ref().correctBoundaryConditions();
+    return tfield;
 }
 
 
@@ -492,4 +547,5 @@ void Foam::canopyCoupling::writeStructure()
 void Foam::canopyCoupling::restoreForce(const volVectorField& force)
 {
     force_ == force;
+    faceForce_.clear();
 }
