@@ -351,16 +351,6 @@ Foam::tmp<Foam::volVectorField> Foam::canopyCoupling::forcingIncrement
 }
 
 
-void Foam::canopyCoupling::correctForcing
-(
-    const volVectorField& U,
-    fvVectorMatrix& UEqn
-)
-{
-    UEqn -= forcingIncrement(U);
-}
-
-
 const Foam::surfaceScalarField& Foam::canopyCoupling::faceForce() const
 {
     if (!faceForce_.valid())
