@@ -101,7 +101,7 @@ int main(int argc, char *argv[])
 
         Info<< "Time = " << runTime.timeName() << nl << endl;
 
-        coupling.beginTimeStep();
+        coupling.beginTimeStep(U);
 
         // --- Pressure-velocity PIMPLE corrector loop with the coupling
         while (pimple.loop())

@@ -6,6 +6,7 @@
 #include "canopyCoupling.H"
 #include "extrapolatedCalculatedFvPatchFields.H"
 #include "surfaceInterpolate.H"
+#include "IOField.H"
 #include "canopy.h"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -63,6 +64,141 @@ Foam::tmp<Foam::scalarField> Foam::canopyCoupling::markerVolumes() const
         dV[m] *= Foam::cbrt(h[m].x()*h[m].y()*h[m].z());
     }
     return tdV;
+}
+
+
+void Foam::canopyCoupling::spreadForce()
+{
+    vectorField f(mesh_.nCells(), Zero);
+    velocityStencil_->spread(markerForceTotal_, f);
+    force_.primitiveFieldRef() = f;
+    force_.correctBoundaryConditions();
+    faceForce_.clear();
+}
+
+
+void Foam::canopyCoupling::readCouplingState()
+{
+    IOobject io
+    (
+        "canopyCoupling",
+        mesh_.time().timeName(),
+        "uniform",
+        mesh_,
+        IOobject::MUST_READ,
+        IOobject::NO_WRITE,
+        false
+    );
+    if (!io.typeHeaderOk<IOdictionary>(true))
+    {
+        WarningInFunction
+            << "No " << io.objectPath() << ": the immersed-boundary force"
+            << " restarts from zero and the frame from the payload" << endl;
+        return;
+    }
+    const IOdictionary state(io);
+    const vectorField F(state.get<vectorField>("markerForce"));
+    if (F.size() != markerForceTotal_.size())
+    {
+        FatalIOErrorInFunction(state)
+            << "Entry 'markerForce' holds " << F.size() << " marker forces,"
+            << " but the canopy has " << markerForceTotal_.size()
+            << " markers (were the canopy or coupling.markerSpacing changed"
+            << " since it was written?)" << exit(FatalIOError);
+    }
+    markerForceTotal_ = F;
+    if (followPayload_)
+    {
+        frameOrigin_ = state.get<vector>("frameOrigin");
+        frameVelocity_ = state.get<vector>("frameVelocity");
+    }
+}
+
+
+void Foam::canopyCoupling::writeCouplingState() const
+{
+    IOdictionary state
+    (
+        IOobject
+        (
+            "canopyCoupling",
+            mesh_.time().timeName(),
+            "uniform",
+            mesh_,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        )
+    );
+    state.add("markerForce", markerForceTotal_);
+    state.add("frameOrigin", frameOrigin_);
+    state.add("frameVelocity", frameVelocity_);
+    state.regIOobject::write();
+}
+
+
+void Foam::canopyCoupling::readFrame(const dictionary& dict)
+{
+    const dictionary& frame = dict.subOrEmptyDict("frame");
+    const word type(frame.getOrDefault<word>("type", "fixed"));
+    if (type != "fixed" && type != "payload")
+    {
+        FatalIOErrorInFunction(frame)
+            << "Entry 'coupling.frame.type' = " << type
+            << " is not valid; valid: fixed payload" << exit(FatalIOError);
+    }
+    followPayload_ = type == "payload";
+    wind_ = frame.getOrDefault<vector>("wind", Zero);
+    if (!followPayload_)
+    {
+        return;
+    }
+    if (!structure_.hasPayload())
+    {
+        FatalIOErrorInFunction(frame)
+            << "Entry 'coupling.frame.type' = payload, but the structure has"
+            << " no payload" << exit(FatalIOError);
+    }
+    const wordReList names(frame.get<wordReList>("inletPatches"));
+    inletPatches_ = mesh_.boundaryMesh().patchSet(names, false).sortedToc();
+    if (inletPatches_.empty())
+    {
+        FatalIOErrorInFunction(frame)
+            << "Entry 'coupling.frame.inletPatches' = " << names
+            << " matches no patch; patches: " << mesh_.boundaryMesh().names()
+            << exit(FatalIOError);
+    }
+    frameVelocity_ = structure_.payloadVelocity();
+}
+
+
+Foam::tmp<Foam::scalarField>
+Foam::canopyCoupling::interfaceNormalVelocities() const
+{
+    tmp<scalarField> tvn(structure_.normalVelocities());
+    if (followPayload_)
+    {
+        tvn.ref() -= frameVelocity_ & structure_.triangleNormals();
+    }
+    return tvn;
+}
+
+
+Foam::tmp<Foam::vectorField>
+Foam::canopyCoupling::interfaceVelocities() const
+{
+    tmp<vectorField> tv(structure_.triangleVelocities());
+    if (followPayload_)
+    {
+        tv.ref() -= frameVelocity_;
+    }
+    return tv;
+}
+
+
+void Foam::canopyCoupling::placeMarkers()
+{
+    markers_->update(structure_.model(), frameOrigin_);
 }
 
 
@@ -128,6 +264,8 @@ Foam::canopyCoupling::canopyCoupling
     tolerance_(1e-3),
     Uref_(1),
     aitken_(0.5),
+    markerForceTotal_(),
+    markerForceStart_(),
     force_
     (
         IOobject
@@ -135,7 +273,7 @@ Foam::canopyCoupling::canopyCoupling
             "canopyForce",
             mesh.time().timeName(),
             mesh,
-            IOobject::READ_IF_PRESENT,
+            IOobject::NO_READ,
             IOobject::AUTO_WRITE
         ),
         mesh,
@@ -150,6 +288,13 @@ Foam::canopyCoupling::canopyCoupling
     pressureForce_(Zero),
     slip_(0),
     stopIfNotConverged_(true),
+    followPayload_(false),
+    wind_(Zero),
+    inletPatches_(),
+    frameOrigin_(Zero),
+    frameVelocity_(Zero),
+    frameAcceleration_(Zero),
+    frameVelocityStart_(Zero),
     failure_()
 {
     const dictionary& dict = structure_.dict().subOrEmptyDict("coupling");
@@ -184,6 +329,7 @@ Foam::canopyCoupling::canopyCoupling
     const scalar omega0 = dict.getOrDefault<scalar>("initialRelaxation", 0.5);
     stopIfNotConverged_ = dict.getOrDefault<bool>("stopIfNotConverged", true);
 
+
     const word tangential(dict.getOrDefault<word>("tangential", "noSlip"));
     if (tangential != "noSlip" && tangential != "free")
     {
@@ -217,6 +363,7 @@ Foam::canopyCoupling::canopyCoupling
             << " must be >= 1" << exit(FatalIOError);
     }
     aitken_ = aitkenRelaxation(omega0);
+    readFrame(dict);
 
     kernel_ = deltaKernel::New(dict.getOrDefault<word>("kernel", "roma3"));
 
@@ -254,10 +401,20 @@ Foam::canopyCoupling::canopyCoupling
     plusStencil_.reset(new ibStencil(mesh, kernel_()));
     minusStencil_.reset(new ibStencil(mesh, kernel_()));
 
+    // The IB force is carried by the markers; a restart reads it and the
+    // frame
+    markerForceTotal_.setSize(markers_->size(), Zero);
+    if (runTime.value() != 0)
+    {
+        readCouplingState();
+    }
+    frameVelocityStart_ = frameVelocity_;
+    placeMarkers();
+
     // Interface velocity from the structure's initial state
     const label nt = structure_.nTriangles();
-    normalVelocity_ = structure_.normalVelocities();
-    triangleVelocity_ = structure_.triangleVelocities();
+    normalVelocity_ = interfaceNormalVelocities();
+    triangleVelocity_ = interfaceVelocities();
     const string problem(updateStencils());
     if (!problem.empty())
     {
@@ -265,22 +422,54 @@ Foam::canopyCoupling::canopyCoupling
             << "At the start: " << problem.c_str() << exit(FatalError);
     }
 
+    spreadForce();
+
     Info<< "canopyCoupling: "
         << (scheme_ == scheme::strong ? "strong" : "explicit") << " coupling, "
         << markers_->size() << " markers on " << nt << " canopy triangles"
         << " (spacing " << spacing << " m), kernel "
         << dict.getOrDefault<word>("kernel", "roma3")
         << ", " << forcingIterations_ << " forcing iterations, "
-        << tangential << nl << endl;
+        << tangential;
+    if (followPayload_)
+    {
+        Info<< ", the mesh follows the payload (inlet patches "
+            << inletPatches_ << ", wind " << wind_ << ")";
+    }
+    Info<< nl << endl;
 }
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+void Foam::canopyCoupling::beginTimeStep(volVectorField& U)
+{
+    frameVelocityStart_ = frameVelocity_;
+    if (followPayload_)
+    {
+        // The frame moves at the payload's velocity over this step; its
+        // change is a uniform fictitious force -A on the air (faceForce())
+        const scalar dt = mesh_.time().deltaTValue();
+        frameVelocity_ = structure_.payloadVelocity();
+        frameAcceleration_ = (frameVelocity_ - frameVelocityStart_)/dt;
+        volVectorField::Boundary& Ub = U.boundaryFieldRef();
+        for (const label patchi : inletPatches_)
+        {
+            Ub[patchi] == wind_ - frameVelocity_;
+        }
+        normalVelocity_ = interfaceNormalVelocities();
+        triangleVelocity_ = interfaceVelocities();
+        faceForce_.clear();
+    }
+    beginTimeStep();
+}
+
+
 void Foam::canopyCoupling::beginTimeStep()
 {
     failure_.clear();
     structure_.checkpoint();
+    markerForceStart_ = markerForceTotal_;
     aitken_.reset();
     iteration_ = 0;
     structureSolves_ = 0;
@@ -342,10 +531,11 @@ Foam::tmp<Foam::volVectorField> Foam::canopyCoupling::forcingIncrement
         Ustar.correctBoundaryConditions();
     }
 
+    markerForceTotal_ += markerForce;
     force_.primitiveFieldRef() += dForce.primitiveField();
     force_.correctBoundaryConditions();
     faceForce_.clear();
-    markerForce_ = sum(markerForce);
+    markerForce_ = sum(markerForceTotal_);
     slip_ = slip/max(Uref_, vn.size() ? max(mag(vn)) : 0);
     return tdForce;
 }
@@ -360,7 +550,10 @@ const Foam::surfaceScalarField& Foam::canopyCoupling::faceForce() const
             new surfaceScalarField
             (
                 "canopyFaceForce",
-                fvc::interpolate(force_) & mesh_.Sf()
+                (
+                    fvc::interpolate(force_)
+                  - dimensionedVector("A", force_.dimensions(), frameAcceleration_)
+                ) & mesh_.Sf()
             )
         );
     }
@@ -441,8 +634,8 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
     subSteps_ = substeps;
     ++structureSolves_;
 
-    const scalarField target(structure_.normalVelocities());
-    triangleVelocity_ = structure_.triangleVelocities();
+    const scalarField target(interfaceNormalVelocities());
+    triangleVelocity_ = interfaceVelocities();
     const label nt = target.size();
 
     const scalar scale = max(Uref_, nt ? max(mag(target)) : 0);
@@ -462,18 +655,30 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
         converged_ = true;
     }
 
-    markers_->update(structure_.model());
+    placeMarkers();
     const string problem(updateStencils());
     if (!problem.empty())
     {
         failure_ = "at t = " + mesh_.time().timeName() + ", " + problem;
         // Markers and stencils back at the step's start for what follows
         structure_.restore();
-        markers_->update(structure_.model());
+        placeMarkers();
         updateStencils();
+        markerForceTotal_ = markerForceStart_;
+        spreadForce();
         converged_ = true;
         return true;            // ends the outer loop
     }
+
+    // Strong coupling: the next iteration's fluid solve starts from the
+    // step's IB force, so that the fluid's response is a function of the
+    // interface velocity alone (not of the iteration history); the
+    // markers' forces move with them
+    if (scheme_ == scheme::strong && !stop)
+    {
+        markerForceTotal_ = markerForceStart_;
+    }
+    spreadForce();
 
     Info<< "canopyCoupling: iteration " << iteration_
         << ", interface residual " << residual_
@@ -505,11 +710,37 @@ bool Foam::canopyCoupling::endTimeStep()
             WarningInFunction << text.c_str() << endl;
         }
     }
+    // The frame moves on with the step; the markers with it
+    if (!failed() && followPayload_)
+    {
+        const vector shift = frameVelocity_*mesh_.time().deltaTValue();
+        frameOrigin_ += shift;
+        placeMarkers();
+        const string problem(updateStencils());
+        if (problem.empty())
+        {
+            spreadForce();
+        }
+        else
+        {
+            frameOrigin_ -= shift;
+            failure_ =
+                "at t = " + mesh_.time().timeName() + " (frame moved), "
+              + problem;
+        }
+    }
+
     if (failed())
     {
         // Back to the last good state (the start of this step)
         structure_.restore();
         structure_.commit();
+        frameVelocity_ = frameVelocityStart_;
+        frameAcceleration_ = Zero;
+        placeMarkers();
+        updateStencils();
+        markerForceTotal_ = markerForceStart_;
+        spreadForce();
         return false;
     }
 
@@ -518,11 +749,11 @@ bool Foam::canopyCoupling::endTimeStep()
     // The next step starts from the committed structure's interface
     // velocity (not the relaxed iterate), so that a restart, which knows
     // only the structure's state, continues exactly
-    normalVelocity_ = structure_.normalVelocities();
+    normalVelocity_ = interfaceNormalVelocities();
     writeSeries();
     if (mesh_.time().writeTime())
     {
-        structure_.write(mesh_.time());
+        writeStructure();
     }
     return true;
 }
@@ -531,11 +762,5 @@ bool Foam::canopyCoupling::endTimeStep()
 void Foam::canopyCoupling::writeStructure()
 {
     structure_.write(mesh_.time());
-}
-
-
-void Foam::canopyCoupling::restoreForce(const volVectorField& force)
-{
-    force_ == force;
-    faceForce_.clear();
+    writeCouplingState();
 }

@@ -109,7 +109,11 @@ Foam::canopyMarkers::canopyMarkers
 }
 
 
-void Foam::canopyMarkers::update(const canopy_model* model)
+void Foam::canopyMarkers::update
+(
+    const canopy_model* model,
+    const vector& origin
+)
 {
     const int n = canopy_model_node_count(model);
     const int nt = canopy_model_triangle_count(model);
@@ -132,7 +136,7 @@ void Foam::canopyMarkers::update(const canopy_model* model)
             const int i = tri[3*t + k];
             p += barycentric_[m][k]*point(x[3*i], x[3*i+1], x[3*i+2]);
         }
-        points_[m] = p;
+        points_[m] = p - origin;
         normals_[m] = vector(normal[3*t], normal[3*t+1], normal[3*t+2]);
         areas_[m] = fraction_[m]*area[t];
     }

@@ -29,6 +29,16 @@ Foam::fv::canopyImmersedBoundary::canopyImmersedBoundary
     coupling_(mesh, true),
     timeIndex_(-1)
 {
+    if (coupling_.followsPayload())
+    {
+        FatalIOErrorInFunction
+        (
+            coupling_.structure().dict().subDict("coupling").subDict("frame")
+        )   << "Entry 'coupling.frame.type' = payload needs canopyPimpleFoam"
+            << " (the fvOption cannot set the inlet velocity); use"
+            << " frame { type fixed; } with the fvOption"
+            << exit(FatalIOError);
+    }
     fieldNames_.setSize(1, "U");
     applied_.setSize(1, false);
 }
