@@ -33,6 +33,11 @@ namespace Foam
 
 const Foam::word Foam::canopyStructure::propertiesName("canopyProperties");
 
+const Foam::fileName Foam::canopyStructure::defaultInitialStateName
+(
+    "constant/canopyInitialState.h5"
+);
+
 
 // * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * * //
 
@@ -103,7 +108,11 @@ void Foam::canopyStructure::check
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::canopyStructure::canopyStructure(const Time& runTime)
+Foam::canopyStructure::canopyStructure
+(
+    const Time& runTime,
+    const bool useInitialState
+)
 :
     dict_(),
     model_(nullptr),
@@ -146,6 +155,21 @@ Foam::canopyStructure::canopyStructure(const Time& runTime)
     }
 
     build(g);
+
+    // The initial state (e.g. a folded canopy), unless the run restarts
+    // from the structure's own output (which canopyCoupling then reads)
+    if (useInitialState)
+    {
+        const fileName h5(initialStateFile(runTime));
+        if
+        (
+            !h5.empty()
+         && (runTime.value() == 0 || !stateAvailable(runTime))
+        )
+        {
+            readInitialState(h5);
+        }
+    }
 }
 
 

@@ -19,6 +19,12 @@ Description
     nodal forces (/steps/NNNNNN/f_ext), which libcanopy has no getter for,
     and broadcasts the whole state.
 
+    The initial state (entry initialState, e.g. a folded canopy written by
+    canopyFold) is read the same way, with the HDF5 C library from the
+    documented layout: /mesh attributes nodes, springs, triangles;
+    /mesh/triangles, /mesh/springs and /mesh/spring_rest_length to check
+    that the file holds this structure; x and v of the last /steps group.
+
 \*---------------------------------------------------------------------------*/
 
 #include "canopyStructure.H"
@@ -244,6 +250,234 @@ bool readNodalForces
     {
         message = "cannot read " + path + " in '" + h5 + "'";
         return false;
+    }
+    return true;
+}
+
+
+// A dataset of rows x cols (cols 0: one-dimensional) of the given memory
+// type (H5T_NATIVE_DOUBLE or H5T_NATIVE_INT), read whole into data
+template<class T>
+bool readDataset
+(
+    const hid_t file,
+    const std::string& h5,
+    const std::string& path,
+    const hid_t memType,
+    const hsize_t rows,
+    const hsize_t cols,
+    std::vector<T>& data,
+    std::string& message
+)
+{
+    data.assign(std::size_t(rows*(cols > 0 ? cols : 1)), T(0));
+    const hdf5Handle set(H5Dopen2(file, path.c_str(), H5P_DEFAULT), H5Dclose);
+    if (!set.valid())
+    {
+        message = "'" + h5 + "' has no dataset " + path;
+        return false;
+    }
+    const hdf5Handle space(H5Dget_space(set.id()), H5Sclose);
+    const int rank = cols > 0 ? 2 : 1;
+    hsize_t dims[2] = {0, 0};
+    if
+    (
+        !space.valid()
+     || H5Sget_simple_extent_ndims(space.id()) != rank
+     || H5Sget_simple_extent_dims(space.id(), dims, nullptr) != rank
+     || dims[0] != rows
+     || (cols > 0 && dims[1] != cols)
+    )
+    {
+        message =
+            "'" + h5 + "': " + path + " is not "
+          + std::to_string(rows)
+          + (cols > 0 ? " x " + std::to_string(cols) : " values");
+        return false;
+    }
+    if
+    (
+        rows > 0
+     && H5Dread(set.id(), memType, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data())
+      < 0
+    )
+    {
+        message = "cannot read " + path + " in '" + h5 + "'";
+        return false;
+    }
+    return true;
+}
+
+
+// An integer attribute of the object at path (e.g. /mesh nodes)
+bool readIntAttribute
+(
+    const hid_t file,
+    const std::string& h5,
+    const std::string& path,
+    const char* name,
+    int& value,
+    std::string& message
+)
+{
+    const hdf5Handle obj(H5Oopen(file, path.c_str(), H5P_DEFAULT), H5Oclose);
+    const hdf5Handle attr
+    (
+        obj.valid() ? H5Aopen(obj.id(), name, H5P_DEFAULT) : -1,
+        H5Aclose
+    );
+    if (!attr.valid() || H5Aread(attr.id(), H5T_NATIVE_INT, &value) < 0)
+    {
+        message =
+            "'" + h5 + "' has no readable attribute '" + name + "' on "
+          + path;
+        return false;
+    }
+    return true;
+}
+
+
+// The state of the last step of an output file, checked against the
+// model: counts, spring ends, triangles and rest lengths. Positions and
+// velocities in x and v (3 n each); false with a message.
+bool readLastState
+(
+    const canopy_model* m,
+    const std::string& h5,
+    std::vector<double>& x,
+    std::vector<double>& v,
+    std::string& stepName,
+    double& stepTime,
+    std::string& message
+)
+{
+    std::vector<outputStep> steps;
+    if (!listSteps(h5, steps, message))
+    {
+        return false;
+    }
+    if (steps.empty())
+    {
+        message = "'" + h5 + "' holds no steps";
+        return false;
+    }
+
+    const hdf5Quiet quiet;
+    const hdf5Handle file(openReadOnly(h5), H5Fclose);
+    if (!file.valid())
+    {
+        message = "cannot open '" + h5 + "' (unreadable or not HDF5)";
+        return false;
+    }
+
+    // Counts
+    const int n = canopy_model_node_count(m);
+    const int ns = canopy_model_spring_count(m);
+    const int nt = canopy_model_triangle_count(m);
+    const struct { const char* name; int model; } counts[] =
+    {
+        {"nodes", n}, {"springs", ns}, {"triangles", nt}
+    };
+    for (const auto& c : counts)
+    {
+        int inFile = -1;
+        if (!readIntAttribute(file.id(), h5, "/mesh", c.name, inFile, message))
+        {
+            return false;
+        }
+        if (inFile != c.model)
+        {
+            message =
+                "'" + h5 + "' does not hold this structure: "
+              + std::to_string(inFile) + " " + c.name + " in the file, "
+              + std::to_string(c.model) + " in the model built from the "
+                "dictionary";
+            return false;
+        }
+    }
+
+    // Connectivity and rest lengths
+    std::vector<int> tri(3*std::size_t(nt)), ends(2*std::size_t(ns));
+    std::vector<double> rest(ns);
+    canopy_model_get_triangles(m, tri.data(), nt);
+    canopy_model_get_springs(m, ends.data(), rest.data(), nullptr, ns);
+
+    std::vector<int> triFile, endsFile;
+    std::vector<double> restFile;
+    if
+    (
+        !readDataset(file.id(), h5, "/mesh/triangles", H5T_NATIVE_INT,
+            nt, 3, triFile, message)
+     || !readDataset(file.id(), h5, "/mesh/springs", H5T_NATIVE_INT,
+            ns, 2, endsFile, message)
+     || !readDataset(file.id(), h5, "/mesh/spring_rest_length",
+            H5T_NATIVE_DOUBLE, ns, 0, restFile, message)
+    )
+    {
+        return false;
+    }
+    for (std::size_t i = 0; i < tri.size(); ++i)
+    {
+        if (tri[i] != triFile[i])
+        {
+            message =
+                "'" + h5 + "' does not hold this structure: triangle "
+              + std::to_string(i/3) + " has other vertices in the file";
+            return false;
+        }
+    }
+    for (std::size_t i = 0; i < ends.size(); ++i)
+    {
+        if (ends[i] != endsFile[i])
+        {
+            message =
+                "'" + h5 + "' does not hold this structure: spring "
+              + std::to_string(i/2) + " joins other nodes in the file";
+            return false;
+        }
+    }
+    for (int k = 0; k < ns; ++k)
+    {
+        if (!(std::abs(rest[k] - restFile[k]) <= 1e-9*rest[k]))
+        {
+            Foam::OStringStream os;
+            os  << "'" << h5.c_str() << "' does not hold this structure: the"
+                << " rest length of spring " << k << " is " << restFile[k]
+                << " m in the file, " << rest[k] << " m in the model (was"
+                << " it written for another canopy size or edge length?)";
+            message = os.str();
+            return false;
+        }
+    }
+
+    // The last step (highest number)
+    std::size_t last = 0;
+    for (std::size_t s = 1; s < steps.size(); ++s)
+    {
+        if (steps[s].number > steps[last].number) last = s;
+    }
+    stepName = steps[last].name;
+    stepTime = steps[last].time;
+    const std::string group = "/steps/" + stepName;
+    if
+    (
+        !readDataset(file.id(), h5, group + "/x", H5T_NATIVE_DOUBLE, n, 3,
+            x, message)
+     || !readDataset(file.id(), h5, group + "/v", H5T_NATIVE_DOUBLE, n, 3,
+            v, message)
+    )
+    {
+        return false;
+    }
+    for (std::size_t i = 0; i < x.size(); ++i)
+    {
+        if (!std::isfinite(x[i]) || !std::isfinite(v[i]))
+        {
+            message =
+                "'" + h5 + "': " + group + " holds a value that is not"
+                " finite (node " + std::to_string(i/3) + ")";
+            return false;
+        }
     }
     return true;
 }
@@ -591,6 +825,127 @@ void Foam::canopyStructure::readState
 
     Info<< "canopyStructure: restarted from " << h5 << " at time "
         << stepTime << endl;
+}
+
+
+Foam::fileName Foam::canopyStructure::initialStateFile
+(
+    const Time& runTime
+) const
+{
+    const word key("initialState");
+    const entry* e = dict_.findEntry(key, keyType::LITERAL);
+    if (!e)
+    {
+        return fileName();
+    }
+    if (e->isDict())
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Entry '" << key << "' must be a file name (e.g. "
+            << defaultInitialStateName << "), not a sub-dictionary" << nl
+            << exit(FatalIOError);
+    }
+    ITstream& is = e->stream();
+    if (is.size() != 1 || !is[0].isStringType())
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Entry '" << key << "' must be a single file name (e.g. "
+            << defaultInitialStateName << "), found " << is.toString().c_str()
+            << nl << exit(FatalIOError);
+    }
+    fileName file(is[0].stringToken());
+    file.expand();
+    if (file.ext() != "h5")
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Entry '" << key << "' = " << file << " must name an HDF5"
+            << " file ending in .h5 (as canopyFold writes)" << nl
+            << exit(FatalIOError);
+    }
+    if (!file.isAbsolute())
+    {
+        file = runTime.globalPath()/file;
+    }
+    return file;
+}
+
+
+void Foam::canopyStructure::readInitialState(const fileName& h5)
+{
+    const int n = nNodes();
+
+    bool ok = true;
+    string message;
+    List<scalar> x, v;
+    scalar stepTime = 0;
+    string stepName;
+
+    if (Pstream::master())
+    {
+        std::vector<double> xs, vs;
+        std::string name, why;
+        double t = 0;
+        if (!isFile(h5))
+        {
+            ok = false;
+            message = "'" + h5 + "' does not exist (run canopyFold first?)";
+        }
+        else if (!readLastState(model_.get(), h5, xs, vs, name, t, why))
+        {
+            ok = false;
+            message = why;
+        }
+        else
+        {
+            x.setSize(3*n);
+            v.setSize(3*n);
+            forAll(x, i)
+            {
+                x[i] = xs[i];
+                v[i] = vs[i];
+            }
+            stepTime = t;
+            stepName = name;
+        }
+    }
+
+    Pstream::scatter(ok);
+    Pstream::scatter(message);
+    if (!ok)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Entry 'initialState' = " << h5 << ": " << message.c_str()
+            << nl << exit(FatalIOError);
+    }
+    Pstream::scatter(x);
+    Pstream::scatter(v);
+    Pstream::scatter(stepTime);
+    Pstream::scatter(stepName);
+
+    canopy_model* m = model_.get();
+    check
+    (
+        canopy_model_set_positions(m, x.cdata(), n),
+        FUNCTION_NAME, "canopy_model_set_positions"
+    );
+    check
+    (
+        canopy_model_set_velocities(m, v.cdata(), n),
+        FUNCTION_NAME, "canopy_model_set_velocities"
+    );
+
+    if (!identicalOnAllRanks())
+    {
+        FatalErrorInFunction
+            << "After reading the initial state " << h5
+            << " the structure differs between ranks" << nl
+            << exit(FatalError);
+    }
+
+    Info<< "canopyStructure: initial state from " << h5 << " (step "
+        << stepName.c_str() << ", written at t = " << stepTime
+        << " of its pre-simulation)" << endl;
 }
 
 
