@@ -166,6 +166,8 @@ canopy_status canopy_model_add_triangle(canopy_model *model, int a, int b,
 
 /* Gravity vector [m/s^2]. Default (0, 0, -9.81). */
 canopy_status canopy_model_set_gravity(canopy_model *model, const double g[3]);
+/* The gravity vector [m/s^2]; CANOPY_ERR_ARGUMENT for a NULL argument. */
+canopy_status canopy_model_get_gravity(const canopy_model *model, double g[3]);
 
 /* Darcy–Forchheimer porosity of the canopy cloth (seed 002 eqs. 6–10):
  * the seepage velocity w through the cloth satisfies dp = alpha w + beta w|w|,

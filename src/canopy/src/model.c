@@ -324,6 +324,14 @@ canopy_status canopy_model_set_gravity(canopy_model *model, const double g[3])
     return CANOPY_OK;
 }
 
+canopy_status canopy_model_get_gravity(const canopy_model *model, double g[3])
+{
+    if (model == NULL || g == NULL)
+        return CANOPY_ERR_ARGUMENT;
+    memcpy(g, model->gravity, 3 * sizeof(double));
+    return CANOPY_OK;
+}
+
 canopy_status canopy_model_set_porosity(canopy_model *model, double alpha,
                                         double beta)
 {

@@ -133,7 +133,18 @@ void Foam::canopyCoupling::writeCouplingState() const
     state.add("markerForce", markerForceTotal_);
     state.add("frameOrigin", frameOrigin_);
     state.add("frameVelocity", frameVelocity_);
-    state.regIOobject::write();
+
+    // ASCII (a dictionary cannot hold binary fields) with every digit, so
+    // that a restart continues exactly
+    const unsigned precision = IOstream::defaultPrecision(17);
+    state.writeObject
+    (
+        IOstream::ASCII,
+        IOstream::currentVersion,
+        IOstream::UNCOMPRESSED,
+        true
+    );
+    IOstream::defaultPrecision(precision);
 }
 
 
@@ -218,11 +229,18 @@ void Foam::canopyCoupling::writeSeries()
         );
         mkDir(dir);
         series_.reset(new OFstream(dir/"canopy.dat"));
+        double g[3] = {0, 0, 0};
+        canopy_model_get_gravity(structure_.model(), g);
         series_()
+            << "# canopyFoam time series of the canopy (ground frame)" << nl
+            << "# nominalDiameter " << nominalDiameter_ << nl
+            << "# totalMass " << structure_.totalMass() << nl
+            << "# rho " << rho_ << nl
+            << "# gravity " << g[0] << ' ' << g[1] << ' ' << g[2] << nl
             << "# time payload_x payload_y payload_z payload_Ux payload_Uy"
             << " payload_Uz force_x force_y force_z projected_diameter"
             << " canopy_area kinetic spring gravity coupling_iterations"
-            << " residual slip substeps" << nl;
+            << " residual slip substeps frame_x frame_y frame_z" << nl;
     }
     const point x
     (
@@ -242,7 +260,8 @@ void Foam::canopyCoupling::writeSeries()
         << pressureForce_.z() << ' ' << diameter << ' ' << area
         << ' ' << e.kinetic << ' ' << e.spring << ' ' << e.gravity
         << ' ' << iteration_ << ' ' << residual_ << ' ' << slip_
-        << ' ' << subSteps_ << endl;
+        << ' ' << subSteps_ << ' ' << frameOrigin_.x() << ' '
+        << frameOrigin_.y() << ' ' << frameOrigin_.z() << endl;
 }
 
 
@@ -288,6 +307,7 @@ Foam::canopyCoupling::canopyCoupling
     pressureForce_(Zero),
     slip_(0),
     stopIfNotConverged_(true),
+    nominalDiameter_(0),
     followPayload_(false),
     wind_(Zero),
     inletPatches_(),
@@ -424,6 +444,20 @@ Foam::canopyCoupling::canopyCoupling
 
     spreadForce();
 
+    // Nominal diameter (canopy.diameter, else that of a disc of the
+    // canopy's area), for drag coefficients in post-processing
+    const scalar area0 = structure_.canopyArea();
+    nominalDiameter_ =
+        structure_.dict().subOrEmptyDict("canopy").getOrDefault<scalar>
+        (
+            "diameter",
+            Foam::sqrt(4*area0/constant::mathematical::pi)
+        );
+
+    Info<< "canopyCoupling: structure of " << structure_.nNodes()
+        << " nodes, total mass " << structure_.totalMass() << " kg, canopy"
+        << " area " << area0 << " m^2, nominal diameter " << nominalDiameter_
+        << " m" << nl;
     Info<< "canopyCoupling: "
         << (scheme_ == scheme::strong ? "strong" : "explicit") << " coupling, "
         << markers_->size() << " markers on " << nt << " canopy triangles"
