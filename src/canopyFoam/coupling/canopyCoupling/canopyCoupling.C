@@ -347,6 +347,7 @@ Foam::canopyCoupling::canopyCoupling
     tolerance_ = dict.getOrDefault<scalar>("tolerance", 1e-3);
     Uref_ = dict.getOrDefault<scalar>("Uref", 1);
     const scalar omega0 = dict.getOrDefault<scalar>("initialRelaxation", 0.5);
+    const scalar omegaMax = dict.getOrDefault<scalar>("maxRelaxation", 1);
     stopIfNotConverged_ = dict.getOrDefault<bool>("stopIfNotConverged", true);
 
 
@@ -366,6 +367,7 @@ Foam::canopyCoupling::canopyCoupling
         {"tolerance", tolerance_, 0},
         {"Uref", Uref_, 0},
         {"initialRelaxation", omega0, 0},
+        {"maxRelaxation", omegaMax, 0},
     };
     for (const auto& p : positive)
     {
@@ -382,7 +384,14 @@ Foam::canopyCoupling::canopyCoupling
             << "Entry 'coupling.forcingIterations' = " << forcingIterations_
             << " must be >= 1" << exit(FatalIOError);
     }
-    aitken_ = aitkenRelaxation(omega0);
+    if (omegaMax > 1 || omegaMax < omega0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'coupling.maxRelaxation' = " << omegaMax
+            << " must lie in [initialRelaxation, 1] = [" << omega0 << ", 1]"
+            << exit(FatalIOError);
+    }
+    aitken_ = aitkenRelaxation(omega0, min(0.05, omega0), omegaMax);
     readFrame(dict);
 
     kernel_ = deltaKernel::New(dict.getOrDefault<word>("kernel", "roma3"));
