@@ -1,0 +1,820 @@
+"""report.py — analysis of a canopyPimpleFoam run's canopy.dat time series (terminal descent velocity, breathing, drag coefficients) and the summary, report.json and plots of bin/canopy-report.
+
+The solver writes postProcessing/canopy/<startTime>/canopy.dat, one row per
+time step, whitespace separated, comment lines starting with '#':
+
+     1 time [s]                      11 projected diameter [m]
+   2-4 payload position [m]          12 canopy area [m^2]
+   5-7 payload velocity [m/s]        13-15 kinetic, spring, gravity energy [J]
+       (ground frame)                16 coupling iterations
+  8-10 pressure force on the         17 coupling residual
+       canopy [N]                    18 slip
+                                     19 structure sub-steps
+
+and header lines "# nominalDiameter 2.134", "# totalMass 6.02" (canopy +
+lines + payload, kg), "# rho 1.2", "# gravity 0 0 -9.81" when it knows them.
+Columns are taken by name from the column-name line "# time payload_x ..."
+when there is one (later solvers add columns, e.g. frame_x frame_y
+frame_z); otherwise by position.
+
+Definitions used throughout (stated in the summary too):
+- descent speed V = v . g/|g|, the payload velocity along gravity: positive
+  when the payload falls;
+- the steady interval is the last fraction (default 1/3) of the run, from
+  the run's start time to its last time, or [--steady-start, end];
+- means and standard deviations over the interval are time-weighted
+  (trapezoidal), so a variable time step does not bias them;
+- breathing: the projected diameter over the interval, resampled on a
+  uniform grid at the median step, detrended (least-squares line), Hann
+  window, FFT; the peak bin k >= 1 gives the frequency, refined between bins
+  with the Hann ratio formula; the bin width df = 1/(N dt) is the stated
+  resolution. A peak at bin k < 2 (fewer than two periods in the interval)
+  is reported as not resolved;
+- C_D from the force balance at terminal velocity, W = 1/2 rho V^2 S0 C_D,
+  with W = total mass |g|, V the mean descent speed over the interval and
+  S0 = pi D0^2 / 4 the nominal area; and C_D from the mean pressure force
+  against gravity, -F . g/|g|, with the same V and S0.
+
+Only numpy is needed to analyse; matplotlib is imported by plot() alone.
+"""
+
+import argparse
+import json
+import math
+import os
+import sys
+
+import numpy as np
+
+COLUMNS = (
+    "time",
+    "payload_x", "payload_y", "payload_z",
+    "payload_Ux", "payload_Uy", "payload_Uz",
+    "force_x", "force_y", "force_z",
+    "projected_diameter", "canopy_area",
+    "kinetic", "spring", "gravity",
+    "coupling_iterations", "residual", "slip", "substeps",
+)
+NCOLUMNS = len(COLUMNS)
+COL = {name: i for i, name in enumerate(COLUMNS)}
+
+# Header key -> (command-line option, what it is, unit, number of values)
+QUANTITIES = {
+    "nominalDiameter": ("--diameter", "nominal diameter D0", "m", 1),
+    "totalMass": ("--mass", "total mass (canopy + lines + payload)", "kg", 1),
+    "rho": ("--rho", "air density rho", "kg/m^3", 1),
+    "gravity": ("--gravity", "gravity vector", "m/s^2", 3),
+}
+
+# Published values for comparison (seed 000: Kim 2012, Fig. 5.16, sec. 6.2).
+REFERENCES = {
+    "7ft": {
+        "title": "7 ft flat circular canopy, D0 2.134 m, 16 lines, payload "
+                 "5.398 kg (Kim 2012, Fig. 5.16)",
+        "nominalDiameter": 2.134,
+        "descentVelocityDropTest": 4.27,
+        "descentVelocitySimulation": 3.9,
+        "descentVelocitySimulationSpread": 0.05,
+        "breathingFrequencyDropTest": 2.0,
+        "breathingFrequencySimulation": [1.6, 2.0],
+    },
+}
+
+DEFAULT_STEADY_FRACTION = 1.0 / 3.0
+MIN_STEADY_SAMPLES = 4
+MIN_PEAK_BIN = 2
+
+
+class ReportError(Exception):
+    """Something in the data or the options prevents the analysis."""
+
+
+class MissingQuantityError(ReportError):
+    """A quantity is neither in canopy.dat's header nor given as option."""
+
+    def __init__(self, missing):
+        self.missing = list(missing)
+        lines = []
+        for key in self.missing:
+            option, what, unit, n = QUANTITIES[key]
+            value = "GX GY GZ" if n == 3 else "VALUE"
+            lines.append("the %s [%s] is not known: canopy.dat has no "
+                         "'# %s' line; give %s %s"
+                         % (what, unit, key, option, value))
+        ReportError.__init__(self, "\n".join(lines))
+
+
+# ---- reading ---------------------------------------------------------------
+
+def _floats(tokens):
+    try:
+        return [float(x) for x in tokens]
+    except ValueError:
+        return None
+
+
+def read_dat(path):
+    """Read one canopy.dat: (header, rows, skipped).
+
+    header: {key: float or list of floats} from comment lines "# key v [v..]"
+    whose values are all numbers; rows: float array (n, 19) in the order of
+    COLUMNS; skipped: data lines left out because they do not hold a number
+    per column (a line cut short by a crash, say).
+    Columns are found by name when the file has the column-name comment
+    line ("# time payload_x ..."), which may list more columns than these
+    19 (the frame origin, say); without it, the first 19 are taken in the
+    order of COLUMNS.
+    """
+    header = {}
+    names = None
+    rows = []
+    skipped = 0
+    with open(path) as f:
+        for line in f:
+            line = line.strip()
+            if not line:
+                continue
+            if line.startswith("#"):
+                tokens = line[1:].split()
+                if len(tokens) >= 2 and tokens[0] == "time" and \
+                        _floats(tokens[1:]) is None:
+                    names = tokens
+                elif len(tokens) >= 2 and tokens[0][:1].isalpha():
+                    values = _floats(tokens[1:])
+                    if values is not None:
+                        header[tokens[0]] = (values[0] if len(values) == 1
+                                             else values)
+                continue
+            values = _floats(line.split())
+            width = len(names) if names else None
+            if (values is None or not math.isfinite(values[0])
+                    or (width is not None and len(values) != width)
+                    or len(values) < NCOLUMNS):
+                skipped += 1
+                continue
+            rows.append(values)
+    if names:
+        missing = [c for c in COLUMNS if c not in names]
+        if missing:
+            raise ReportError("%s: no column %s in its column-name line"
+                              % (path, ", ".join(missing)))
+        order = [names.index(c) for c in COLUMNS]
+    else:
+        order = list(range(NCOLUMNS))
+    array = (np.array(rows, dtype=float)[:, order] if rows
+             else np.zeros((0, NCOLUMNS)))
+    return header, array, skipped
+
+
+class Series(object):
+    """The concatenated time series of a run.
+
+    t: times (strictly increasing); data: (n, 19) rows; header: merged
+    header (a later file's value wins); files: one dict per canopy.dat
+    (path, startTime, rows, used, skipped); start_time: the earliest
+    startTime folder; overridden: rows replaced by a later file;
+    conflicts: header keys whose value differs between files.
+    """
+
+    def __init__(self, data, header, files, start_time, overridden,
+                 conflicts):
+        self.data = data
+        self.t = data[:, COL["time"]]
+        self.header = header
+        self.files = files
+        self.start_time = start_time
+        self.overridden = overridden
+        self.conflicts = conflicts
+
+    def column(self, name):
+        return self.data[:, COL[name]]
+
+    def columns(self, *names):
+        return self.data[:, [COL[n] for n in names]]
+
+
+def find_dat_files(case_dir):
+    """[(startTime, path)] of postProcessing/canopy/<time>/canopy.dat,
+    by increasing time."""
+    base = os.path.join(case_dir, "postProcessing", "canopy")
+    found = []
+    if os.path.isdir(base):
+        for name in os.listdir(base):
+            path = os.path.join(base, name, "canopy.dat")
+            try:
+                start = float(name)
+            except ValueError:
+                continue
+            if os.path.isfile(path):
+                found.append((start, path))
+    found.sort(key=lambda item: item[0])
+    if not found:
+        raise ReportError("no postProcessing/canopy/<time>/canopy.dat in %s "
+                          "(has canopyPimpleFoam run there?)" % case_dir)
+    return found
+
+
+def _same(a, b):
+    return np.allclose(np.atleast_1d(a), np.atleast_1d(b), rtol=1e-12,
+                       atol=0.0)
+
+
+def concatenate(pieces):
+    """Concatenate [(startTime, path)] in time order into a Series.
+
+    Restart rule: the files are taken by increasing start time; a later
+    file overrides the earlier rows at and after its own first time
+    (within 1e-9 relative), so a run restarted from an earlier write time
+    replaces what the first run computed after it.
+    """
+    header = {}
+    conflicts = set()
+    files = []
+    kept = np.zeros((0, NCOLUMNS))
+    source = np.zeros(0, dtype=int)
+    overridden = 0
+    for index, (start, path) in enumerate(pieces):
+        h, rows, skipped = read_dat(path)
+        for key, value in h.items():
+            if key in header and not _same(header[key], value):
+                conflicts.add(key)
+            header[key] = value
+        files.append({"path": path, "startTime": start, "rows": len(rows),
+                      "skipped": skipped})
+        if len(rows) == 0:
+            continue
+        first = rows[0, 0]
+        eps = 1e-9 * max(1.0, abs(first))
+        keep = kept[:, 0] < first - eps
+        overridden += int(np.count_nonzero(~keep))
+        kept = np.vstack([kept[keep], rows])
+        source = np.concatenate([source[keep],
+                                 np.full(len(rows), index, dtype=int)])
+    if len(kept) == 0:
+        raise ReportError("no data rows in %s"
+                          % ", ".join(p for _, p in pieces))
+    # Within a file times increase; should one not, the last row written
+    # for a time wins and the rows are put in order.
+    order = np.argsort(kept[:, 0], kind="stable")
+    kept, source = kept[order], source[order]
+    t = kept[:, 0]
+    last = np.ones(len(t), dtype=bool)
+    last[:-1] = np.diff(t) > 1e-9 * np.maximum(1.0, np.abs(t[:-1]))
+    if not last.all():
+        overridden += int(np.count_nonzero(~last))
+        kept, source = kept[last], source[last]
+    for index, info in enumerate(files):
+        info["used"] = int(np.count_nonzero(source == index))
+    return Series(kept, header, files, pieces[0][0], overridden,
+                  sorted(conflicts))
+
+
+def load_case(case_dir):
+    """The Series of a case directory (all its restarts)."""
+    return concatenate(find_dat_files(case_dir))
+
+
+# ---- parameters ------------------------------------------------------------
+
+def resolve_parameters(header, diameter=None, mass=None, rho=None,
+                       gravity=None):
+    """{key: (value, source)} for the four quantities.
+
+    An option given overrides the header; a quantity in neither raises
+    MissingQuantityError naming every missing one.
+    """
+    given = {"nominalDiameter": diameter, "totalMass": mass, "rho": rho,
+             "gravity": gravity}
+    params = {}
+    missing = []
+    for key, (option, what, unit, n) in QUANTITIES.items():
+        if given[key] is not None:
+            value, source = given[key], option
+        elif key in header:
+            value, source = header[key], "canopy.dat header"
+        else:
+            missing.append(key)
+            continue
+        if n == 3:
+            value = [float(x) for x in np.atleast_1d(value)]
+            if len(value) != 3:
+                raise ReportError("the %s needs 3 components, got %d (%s)"
+                                  % (what, len(value), source))
+            if not all(math.isfinite(x) for x in value) or \
+                    math.sqrt(sum(x * x for x in value)) == 0.0:
+                raise ReportError("the %s must be a non-zero vector (%s)"
+                                  % (what, source))
+        else:
+            value = float(np.atleast_1d(value)[0])
+            if not (math.isfinite(value) and value > 0.0):
+                raise ReportError("the %s must be positive, got %g (%s)"
+                                  % (what, value, source))
+        params[key] = (value, source)
+    if missing:
+        raise MissingQuantityError(missing)
+    return params
+
+
+# ---- analysis --------------------------------------------------------------
+
+def descent_speed(velocity, gravity):
+    """Velocity component along gravity, (n, 3) -> (n,): > 0 when falling."""
+    g = np.asarray(gravity, dtype=float)
+    return np.asarray(velocity, dtype=float) @ (g / np.linalg.norm(g))
+
+
+def steady_interval(t, run_start, fraction=None, start=None):
+    """(t0, t1, description) of the steady interval.
+
+    start: an explicit start time (clipped to the data); otherwise the last
+    `fraction` (default 1/3) of [run_start, t[-1]]. Raises ReportError when
+    the interval holds fewer than MIN_STEADY_SAMPLES samples.
+    """
+    t = np.asarray(t, dtype=float)
+    end = float(t[-1])
+    if start is not None:
+        if start >= end:
+            raise ReportError("--steady-start %g is not before the last time "
+                              "%g" % (start, end))
+        t0 = max(float(start), float(t[0]))
+        how = "from --steady-start %g" % start
+        if t0 > start:
+            how += " (data start at %g)" % t0
+    else:
+        f = DEFAULT_STEADY_FRACTION if fraction is None else float(fraction)
+        if not 0.0 < f <= 1.0:
+            raise ReportError("--steady-fraction must be in (0, 1], got %g"
+                              % f)
+        t0 = max(end - f * (end - run_start), float(t[0]))
+        how = ("last 1/3 of the run (default)" if fraction is None
+               else "last %.3g of the run (--steady-fraction)" % f)
+    n = int(np.count_nonzero(t >= t0 - 1e-12 * max(1.0, abs(t0))))
+    if n < MIN_STEADY_SAMPLES:
+        raise ReportError("the steady interval t = %g .. %g holds %d samples; "
+                          "need at least %d (a longer run, or an earlier "
+                          "--steady-start)" % (t0, end, n, MIN_STEADY_SAMPLES))
+    return t0, end, how
+
+
+def interval_mask(t, t0, t1):
+    tol = 1e-12 * max(1.0, abs(t0), abs(t1))
+    return (t >= t0 - tol) & (t <= t1 + tol)
+
+
+def trapezoid_weights(t):
+    """Weights w_i with sum w_i y_i = the trapezoidal integral of y over t."""
+    t = np.asarray(t, dtype=float)
+    w = np.zeros(len(t))
+    if len(t) < 2:
+        w[:] = 1.0
+        return w
+    dt = np.diff(t)
+    w[:-1] += 0.5 * dt
+    w[1:] += 0.5 * dt
+    return w
+
+
+def time_statistics(t, y):
+    """Time-weighted mean and standard deviation, min, max, and the drift
+    (least-squares slope times the interval length) of y(t)."""
+    t = np.asarray(t, dtype=float)
+    y = np.asarray(y, dtype=float)
+    w = trapezoid_weights(t)
+    mean = float(np.sum(w * y) / np.sum(w))
+    std = float(math.sqrt(max(0.0, np.sum(w * (y - mean) ** 2) / np.sum(w))))
+    slope = float(np.polyfit(t, y, 1)[0]) if len(t) >= 2 else 0.0
+    return {"mean": mean, "std": std, "min": float(np.min(y)),
+            "max": float(np.max(y)), "drift": slope * float(t[-1] - t[0])}
+
+
+def spectrum(t, y):
+    """One-sided amplitude spectrum of y(t), detrended and Hann-windowed.
+
+    y is resampled linearly on a uniform grid of N points at the median
+    step dt; returns (frequencies, amplitudes, df) with df = 1/(N dt) the
+    bin width and amplitudes scaled so that a sinusoid of amplitude A on a
+    bin shows A.
+    """
+    t = np.asarray(t, dtype=float)
+    y = np.asarray(y, dtype=float)
+    steps = np.diff(t)
+    dt = float(np.median(steps))
+    n = int(round((t[-1] - t[0]) / dt)) + 1
+    n = max(n, 2)
+    dt = (t[-1] - t[0]) / (n - 1)
+    grid = t[0] + dt * np.arange(n)
+    u = np.interp(grid, t, y)
+    u = u - np.polyval(np.polyfit(grid, u, 1), grid)
+    window = 0.5 - 0.5 * np.cos(2.0 * math.pi * np.arange(n) / n)
+    amplitude = 2.0 * np.abs(np.fft.rfft(u * window)) / np.sum(window)
+    return np.fft.rfftfreq(n, dt), amplitude, 1.0 / (n * dt)
+
+
+def breathing(t, diameter):
+    """The breathing frequency of the projected diameter over [t0, t1].
+
+    Returns a dict: frequency (refined, or None when not resolved),
+    binFrequency (the peak bin's centre), resolution (bin width df),
+    peakBin, periods (in the interval, at the refined frequency),
+    amplitude [m], resolved, note; and, for plots, _frequencies and
+    _amplitudes.
+
+    Refinement: for a Hann window the ratio of the larger neighbour to the
+    peak, a = |X[k+-1]| / |X[k]|, gives the offset d = (2a - 1)/(a + 1) bins
+    of a single tone exactly (large N). The bin itself is within df/2.
+    """
+    f, a, df = spectrum(t, diameter)
+    result = {"frequency": None, "binFrequency": None, "resolution": df,
+              "peakBin": None, "periods": None, "amplitude": None,
+              "resolved": False, "note": "",
+              "_frequencies": f, "_amplitudes": a}
+    d = np.asarray(diameter, dtype=float)
+    scale = max(abs(float(np.mean(d))), 1e-300)
+    if len(a) < 3 or float(np.max(a[1:])) <= 1e-12 * scale:
+        result["note"] = "no oscillation of the diameter"
+        return result
+    k = 1 + int(np.argmax(a[1:]))
+    result["peakBin"] = k
+    result["binFrequency"] = float(f[k])
+    result["amplitude"] = float(a[k])
+    if k < MIN_PEAK_BIN:
+        result["note"] = ("the peak is at bin %d, fewer than %d "
+                          "periods in the interval" % (k, MIN_PEAK_BIN))
+        return result
+    if k >= len(a) - 1:
+        result["note"] = "the peak is at the Nyquist frequency"
+        return result
+    left, right = a[k - 1], a[k + 1]
+    side = 1.0 if right >= left else -1.0
+    ratio = max(left, right) / a[k]
+    offset = side * (2.0 * ratio - 1.0) / (ratio + 1.0)
+    offset = min(max(offset, -0.5), 0.5)
+    frequency = (k + offset) * df
+    result["frequency"] = float(frequency)
+    result["periods"] = float(frequency / df)
+    result["resolved"] = True
+    return result
+
+
+def drag_coefficients(speed, drag_force, mass, gravity, rho, diameter):
+    """C_D = W / (q S0) and C_D = drag / (q S0), q = rho V^2 / 2."""
+    g = float(np.linalg.norm(gravity))
+    area = math.pi * diameter ** 2 / 4.0
+    weight = mass * g
+    q = 0.5 * rho * speed ** 2
+    out = {"nominalArea": area, "weight": weight, "dynamicPressure": q,
+           "weightBalance": None, "pressureForce": None}
+    if speed > 0.0:
+        out["weightBalance"] = weight / (q * area)
+        out["pressureForce"] = drag_force / (q * area)
+    return out
+
+
+def analyse(case_dir, fraction=None, steady_start=None, diameter=None,
+            mass=None, rho=None, gravity=None, reference=None, series=None):
+    """The whole report as a JSON-ready dict (plus '_series' and
+    '_breathing' for plotting, which write_outputs leaves out)."""
+    case_dir = os.path.abspath(case_dir)
+    if series is None:
+        series = load_case(case_dir)
+    params = resolve_parameters(series.header, diameter, mass, rho, gravity)
+    if reference is not None and reference not in REFERENCES:
+        raise ReportError("unknown reference '%s' (known: %s)"
+                          % (reference, ", ".join(sorted(REFERENCES))))
+    D0 = params["nominalDiameter"][0]
+    g = np.array(params["gravity"][0])
+    ghat = g / np.linalg.norm(g)
+    t = series.t
+    if len(t) < 2:
+        raise ReportError("only %d time step in the data" % len(t))
+    V = descent_speed(series.columns("payload_Ux", "payload_Uy",
+                                     "payload_Uz"), g)
+    drag = -series.columns("force_x", "force_y", "force_z") @ ghat
+    D = series.column("projected_diameter")
+    iterations = series.column("coupling_iterations")
+
+    t0, t1, how = steady_interval(t, series.start_time, fraction,
+                                  steady_start)
+    m = interval_mask(t, t0, t1)
+    ts = t[m]
+    v_stats = time_statistics(ts, V[m])
+    d_stats = time_statistics(ts, D[m])
+    f_stats = time_statistics(ts, drag[m])
+    b = breathing(ts, D[m])
+    cd = drag_coefficients(v_stats["mean"], f_stats["mean"],
+                           params["totalMass"][0], g,
+                           params["rho"][0], D0)
+    steady_warning = ""
+    if abs(v_stats["drift"]) > max(2.0 * v_stats["std"],
+                                   0.01 * abs(v_stats["mean"])):
+        steady_warning = ("the descent speed drifts by %+.3g m/s over the "
+                          "interval: not steady yet" % v_stats["drift"])
+
+    report = {
+        "case": os.path.basename(case_dir),
+        "caseDir": case_dir,
+        "files": [dict(info, path=os.path.relpath(info["path"], case_dir))
+                  for info in series.files],
+        "steps": int(len(t)),
+        "restarts": max(0, sum(1 for i in series.files if i["rows"]) - 1),
+        "overriddenRows": int(series.overridden),
+        "skippedLines": int(sum(i["skipped"] for i in series.files)),
+        "headerConflicts": series.conflicts,
+        "runStart": float(series.start_time),
+        "timeFirst": float(t[0]),
+        "timeEnd": float(t[-1]),
+        "simulatedTime": float(t[-1] - series.start_time),
+        "parameters": {key: {"value": value, "source": source}
+                       for key, (value, source) in params.items()},
+        "descentDirection": [float(x) for x in ghat],
+        "steady": {"start": float(t0), "end": float(t1),
+                   "duration": float(t1 - t0), "samples": int(len(ts)),
+                   "method": how, "warning": steady_warning},
+        "descentVelocity": v_stats,
+        "projectedDiameter": d_stats,
+        "pressureForceAgainstGravity": f_stats,
+        "breathing": {k: v for k, v in b.items() if not k.startswith("_")},
+        "dragCoefficient": cd,
+        "coupling": {
+            "meanIterations": float(np.mean(iterations)),
+            "meanIterationsSteady": float(np.mean(iterations[m])),
+            "maxIterations": int(np.max(iterations)),
+            "meanResidualSteady": float(np.mean(
+                series.column("residual")[m])),
+        },
+        "reference": None,
+        "_series": series,
+        "_breathing": b,
+        "_descent": V,
+    }
+    if reference is not None:
+        report["reference"] = dict(REFERENCES[reference], name=reference)
+    return report
+
+
+# ---- output ----------------------------------------------------------------
+
+def _g(x, digits=4):
+    return "-" if x is None else "%.*g" % (digits, x)
+
+
+def format_summary(r):
+    """The one-screen summary of a report dict."""
+    p = r["parameters"]
+    v, d, b = r["descentVelocity"], r["projectedDiameter"], r["breathing"]
+    cd, s, c = r["dragCoefficient"], r["steady"], r["coupling"]
+    ref = r.get("reference")
+    D0 = p["nominalDiameter"]["value"]
+
+    def src(key):
+        return "" if p[key]["source"] == "canopy.dat header" else \
+            " (%s)" % p[key]["source"]
+
+    folders = ", ".join(os.path.basename(os.path.dirname(f["path"]))
+                        for f in r["files"])
+    out = []
+    add = out.append
+    add("canopy-report: case %s" % r["case"])
+    add("  data         postProcessing/canopy/{%s}/canopy.dat: %d steps, "
+        "%d restart(s), %d overridden row(s)%s"
+        % (folders, r["steps"], r["restarts"], r["overriddenRows"],
+           ", %d bad line(s) skipped" % r["skippedLines"]
+           if r["skippedLines"] else ""))
+    add("  simulated    t = %s .. %s s (%s s)"
+        % (_g(r["runStart"]), _g(r["timeEnd"], 6), _g(r["simulatedTime"], 6)))
+    gvec = p["gravity"]["value"]
+    add("  parameters   D0 %s m%s (S0 %s m^2), total mass %s kg%s, "
+        "rho %s kg/m^3%s, g (%s) m/s^2%s"
+        % (_g(D0), src("nominalDiameter"), _g(cd["nominalArea"]),
+           _g(p["totalMass"]["value"]), src("totalMass"),
+           _g(p["rho"]["value"]), src("rho"),
+           " ".join(_g(x) for x in gvec), src("gravity")))
+    add("  steady       t = %s .. %s s (%s s, %d steps): %s"
+        % (_g(s["start"], 6), _g(s["end"], 6), _g(s["duration"]),
+           s["samples"], s["method"]))
+    if s["warning"]:
+        add("  WARNING      %s" % s["warning"])
+    line = ("  descent V    %.4g m/s  std %.3g  min %.4g  max %.4g  "
+            "(V = v.g/|g|, time-weighted)"
+            % (v["mean"], v["std"], v["min"], v["max"]))
+    add(line)
+    if ref:
+        add("     ref %-5s drop test %.3g m/s (V/ref = %.3f), seed "
+            "simulation %.2g +- %.2g m/s"
+            % (ref["name"], ref["descentVelocityDropTest"],
+               v["mean"] / ref["descentVelocityDropTest"],
+               ref["descentVelocitySimulation"],
+               ref["descentVelocitySimulationSpread"]))
+    add("  diameter     %.4g m = %.3f D0  std %.3g  min %.4g  max %.4g"
+        % (d["mean"], d["mean"] / D0, d["std"], d["min"], d["max"]))
+    if b["resolved"]:
+        add("  breathing    %.4g Hz  (resolution %.3g Hz, peak bin %d, "
+            "%.1f periods, amplitude %.3g m)"
+            % (b["frequency"], b["resolution"], b["peakBin"], b["periods"],
+               b["amplitude"]))
+    else:
+        add("  breathing    not resolved (resolution %.3g Hz): %s"
+            % (b["resolution"], b["note"]))
+    if ref:
+        lo, hi = ref["breathingFrequencySimulation"]
+        add("     ref %-5s drop test about %.2g Hz, seed simulation "
+            "%.2g-%.2g Hz" % (ref["name"], ref["breathingFrequencyDropTest"],
+                              lo, hi))
+    if cd["weightBalance"] is None:
+        add("  drag coeff.  not defined: the payload is not descending")
+    else:
+        add("  C_D weight   %.4g  = W / (rho V^2 S0 / 2), W = %.4g N, "
+            "q = %.4g Pa" % (cd["weightBalance"], cd["weight"],
+                             cd["dynamicPressure"]))
+        add("  C_D force    %.4g  = mean pressure force against gravity "
+            "%.4g N / (q S0)" % (cd["pressureForce"],
+                                 r["pressureForceAgainstGravity"]["mean"]))
+    if ref and abs(D0 - ref["nominalDiameter"]) > \
+            1e-3 * ref["nominalDiameter"]:
+        add("  NOTE         the reference is for D0 = %.4g m; this case has "
+            "%.4g m" % (ref["nominalDiameter"], D0))
+    add("  coupling     %.2f iterations per step (steady interval %.2f, "
+        "max %d), mean residual over the interval %.3g"
+        % (c["meanIterations"], c["meanIterationsSteady"],
+           int(c["maxIterations"]), c["meanResidualSteady"]))
+    if r["headerConflicts"]:
+        add("  NOTE         header values differ between restarts "
+            "(the latest used): %s" % ", ".join(r["headerConflicts"]))
+    return "\n".join(out) + "\n"
+
+
+def _finite(value):
+    """value with NaN/Inf floats replaced by None (JSON has neither)."""
+    if isinstance(value, dict):
+        return {k: _finite(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [_finite(v) for v in value]
+    if isinstance(value, float) and not math.isfinite(value):
+        return None
+    return value
+
+
+def json_ready(report):
+    """The report without the private (underscore) entries, JSON-safe."""
+    return _finite({k: v for k, v in report.items() if not k.startswith("_")})
+
+
+def plot(report, out_dir):
+    """Write descentVelocity.png and projectedDiameter.png in out_dir;
+    return their paths."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    series = report["_series"]
+    t = series.t
+    V = report["_descent"]
+    D = series.column("projected_diameter")
+    s = report["steady"]
+    v = report["descentVelocity"]
+    ref = report.get("reference")
+    D0 = report["parameters"]["nominalDiameter"]["value"]
+    restarts = [f["startTime"] for f in report["files"][1:] if f["rows"]]
+    paths = []
+
+    fig, ax = plt.subplots(figsize=(8, 4.5))
+    ax.plot(t, V, color="C0", lw=1.2, label="descent speed")
+    ax.axvspan(s["start"], s["end"], color="0.9", zorder=0,
+               label="steady interval")
+    ax.hlines(v["mean"], s["start"], s["end"], color="C3",
+              label="mean %.3g m/s (std %.2g)" % (v["mean"], v["std"]))
+    if ref:
+        ax.axhline(ref["descentVelocityDropTest"], color="k", ls="--", lw=1,
+                   label="drop test %.3g m/s" % ref["descentVelocityDropTest"])
+        ax.axhline(ref["descentVelocitySimulation"], color="0.4", ls=":",
+                   lw=1, label="seed simulation %.2g m/s"
+                   % ref["descentVelocitySimulation"])
+    for x in restarts:
+        ax.axvline(x, color="0.6", ls=":", lw=0.8)
+    ax.set_xlabel("time [s]")
+    ax.set_ylabel("descent speed [m/s]")
+    ax.set_title("%s: payload descent speed" % report["case"])
+    ax.grid(True, alpha=0.3)
+    ax.legend(loc="best", fontsize=8)
+    fig.tight_layout()
+    path = os.path.join(out_dir, "descentVelocity.png")
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+    paths.append(path)
+
+    b = report["_breathing"]
+    fig, (ax1, ax2) = plt.subplots(2, 1, figsize=(8, 7))
+    ax1.plot(t, D, color="C0", lw=1.2, label="projected diameter")
+    ax1.axvspan(s["start"], s["end"], color="0.9", zorder=0,
+                label="steady interval")
+    ax1.axhline(D0, color="k", ls="--", lw=1, label="nominal D0 %.4g m" % D0)
+    for x in restarts:
+        ax1.axvline(x, color="0.6", ls=":", lw=0.8)
+    ax1.set_xlabel("time [s]")
+    ax1.set_ylabel("projected diameter [m]")
+    ax1.set_title("%s: projected diameter" % report["case"])
+    ax1.grid(True, alpha=0.3)
+    ax1.legend(loc="best", fontsize=8)
+    f, a = b["_frequencies"], b["_amplitudes"]
+    ax2.plot(f[1:], a[1:], color="C0", lw=1.2, marker=".", ms=3)
+    if b["resolved"]:
+        ax2.axvline(b["frequency"], color="C3", lw=1,
+                    label="breathing %.3g Hz" % b["frequency"])
+        ax2.set_xlim(0, min(f[-1], max(5.0 * b["frequency"], 10 *
+                                       b["resolution"])))
+        ax2.legend(loc="best", fontsize=8)
+    ax2.set_xlabel("frequency [Hz]  (resolution %.3g Hz)" % b["resolution"])
+    ax2.set_ylabel("amplitude [m]")
+    ax2.set_title("spectrum over the steady interval (detrended, Hann)"
+                  + ("" if b["resolved"] else
+                     ": not resolved, " + b["note"]), fontsize=9)
+    ax2.grid(True, alpha=0.3)
+    fig.tight_layout()
+    path = os.path.join(out_dir, "projectedDiameter.png")
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+    paths.append(path)
+    return paths
+
+
+def write_outputs(report, out_dir, plots=True):
+    """summary.txt, report.json (and the plots) in out_dir; the summary."""
+    os.makedirs(out_dir, exist_ok=True)
+    outputs = plot(report, out_dir) if plots else []
+    summary = format_summary(report)
+    outputs += [os.path.join(out_dir, "summary.txt"),
+                os.path.join(out_dir, "report.json")]
+    summary += "  output       %s in %s\n" % (
+        " ".join(os.path.basename(p) for p in outputs), out_dir)
+    with open(os.path.join(out_dir, "summary.txt"), "w") as f:
+        f.write(summary)
+    data = json_ready(report)
+    data["outputs"] = [os.path.basename(p) for p in outputs]
+    tmp = os.path.join(out_dir, "report.json.tmp")
+    with open(tmp, "w") as f:
+        json.dump(data, f, indent=2, sort_keys=True, allow_nan=False)
+        f.write("\n")
+    os.replace(tmp, os.path.join(out_dir, "report.json"))
+    return summary
+
+
+# ---- command line ----------------------------------------------------------
+
+def parse_args(argv):
+    p = argparse.ArgumentParser(
+        prog="canopy-report",
+        description="Summarise a canopyPimpleFoam run from "
+                    "postProcessing/canopy/*/canopy.dat: terminal descent "
+                    "velocity, breathing frequency, drag coefficients, "
+                    "coupling iterations; writes descentVelocity.png, "
+                    "projectedDiameter.png, summary.txt (also printed) and "
+                    "report.json.")
+    p.add_argument("case", metavar="caseDir", help="the case directory")
+    p.add_argument("--out", metavar="DIR",
+                   help="output directory (default "
+                        "<caseDir>/postProcessing/report)")
+    steady = p.add_mutually_exclusive_group()
+    steady.add_argument("--steady-fraction", type=float, metavar="F",
+                        help="steady interval = the last fraction F of the "
+                             "run (default 1/3)")
+    steady.add_argument("--steady-start", type=float, metavar="T",
+                        help="steady interval = [T, end]")
+    p.add_argument("--diameter", type=float, metavar="D0",
+                   help="nominal diameter [m] (else '# nominalDiameter')")
+    p.add_argument("--mass", type=float, metavar="M",
+                   help="total mass: canopy + lines + payload [kg] "
+                        "(else '# totalMass')")
+    p.add_argument("--rho", type=float, metavar="RHO",
+                   help="air density [kg/m^3] (else '# rho')")
+    p.add_argument("--gravity", type=float, nargs=3,
+                   metavar=("GX", "GY", "GZ"),
+                   help="gravity [m/s^2] (else '# gravity')")
+    p.add_argument("--reference", choices=sorted(REFERENCES),
+                   help="print published values beside the results")
+    p.add_argument("--no-plots", action="store_true",
+                   help="write summary.txt and report.json only")
+    return p.parse_args(argv)
+
+
+def main(argv=None):
+    args = parse_args(sys.argv[1:] if argv is None else argv)
+    try:
+        if not os.path.isdir(args.case):
+            raise ReportError("no case directory %s" % args.case)
+        report = analyse(args.case, fraction=args.steady_fraction,
+                         steady_start=args.steady_start,
+                         diameter=args.diameter, mass=args.mass,
+                         rho=args.rho, gravity=args.gravity,
+                         reference=args.reference)
+        out = args.out or os.path.join(args.case, "postProcessing", "report")
+        summary = write_outputs(report, out, plots=not args.no_plots)
+    except ReportError as e:
+        for line in str(e).splitlines():
+            sys.stderr.write("canopy-report: error: %s\n" % line)
+        return 1
+    sys.stdout.write(summary)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,397 @@
+"""test_report.py — known-answer tests of python/canopyfoam/report.py and bin/canopy-report on synthetic canopy.dat files.
+
+Run as:  /usr/bin/python3 tests/python/test_report.py   (./Alltest report)
+Prints one PASS/FAIL line per check with the numbers; exits 1 if any fails.
+
+The synthetic run (dt = 0.01 s, 0 .. 12 s, gravity (0 0 -9.81)):
+  descent speed  V(t) = Vt (1 - exp(-t/tau)) + aV sin(2 pi fV t + phiV)
+                 Vt = 4 m/s, tau = 0.5 s, aV = 0.05 m/s, fV = 2 Hz
+  diameter       D(t) = Dinf (1 - 0.3 exp(-t/tau)) + aD sin(2 pi f t + phiD)
+                 Dinf = 1.5 m, aD = 0.04 m, f = 2 Hz
+  force          F_z = 0.9 W (1 + 0.02 sin(2 pi fV t)), W = 6.02 kg * 9.81
+  iterations     3, 4, 5, 6, 3, 4, ... (mean 4.5)
+written as a run restarted twice, in folders 0 (to t = 13), 4 (4.01 .. 10.5)
+and 10 (10.01 .. 12): rows 4.01 .. 13 of folder 0 and 10.01 .. 10.5 of
+folder 4 hold wrong values (V + 100, 100 iterations) that the later folders
+must override (all of them: the series ends at 12 s with the last
+restart); "10" sorts before "4" as a string, so a lexical order fails.
+Folder 10 is in the solver's later layout (a title comment, 3 frame
+columns more, found by the column-name line) and ends with a line cut
+short, as a crash leaves it.
+
+Steady interval (default, last 1/3): t = 8 .. 12 s, 401 samples. There
+fV t spans whole periods, so the exact time averages are
+  mean V = Vt - Vt tau (exp(-8/tau) - exp(-12/tau)) / 4  (= 4 - 5.6e-8)
+  std V  = aV / sqrt(2)        (the exponential adds ~1e-7 relative)
+and the trapezoidal rule on 50 samples per period is exact for them, so
+1e-6 m/s is a tolerance with margin that still catches an unweighted
+sample mean (the phase phiV makes its end-point bias ~8e-5 m/s).
+"""
+
+import json
+import math
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, os.path.join(ROOT, "python"))
+
+from canopyfoam import report  # noqa: E402
+
+failures = []
+
+# The synthetic run's constants
+DT = 0.01
+VT, TAU, AV, FV, PHIV = 4.0, 0.5, 0.05, 2.0, 0.7
+DINF, AD, F_BREATH, PHID = 1.5, 0.04, 2.0, 0.3
+D0, MASS, RHO, G = 2.134, 6.02, 1.2, 9.81
+FORCE_SHARE = 0.9
+
+
+def check(name, ok, detail):
+    print("%s %s: %s" % ("PASS" if ok else "FAIL", name, detail))
+    if not ok:
+        failures.append(name)
+    return ok
+
+
+def close(name, got, want, tol, unit=""):
+    """|got - want| <= tol, printed with the numbers."""
+    ok = got is not None and abs(got - want) <= tol
+    err = float("nan") if got is None else got - want
+    return check(name, ok, "got %s, expected %.10g, error %.3g (tolerance "
+                 "%.3g)%s" % ("None" if got is None else "%.10g" % got, want,
+                              err, tol, " " + unit if unit else ""))
+
+
+def row(t, ghat, f_breath=F_BREATH, corrupt=False, step=0, frame=False):
+    """One canopy.dat row of the synthetic run at time t."""
+    V = VT * (1 - math.exp(-t / TAU)) + AV * math.sin(2 * math.pi * FV * t
+                                                        + PHIV)
+    D = DINF * (1 - 0.3 * math.exp(-t / TAU)) + AD * math.sin(
+        2 * math.pi * f_breath * t + PHID)
+    drag = FORCE_SHARE * MASS * G * (1 + 0.02 * math.sin(2 * math.pi * FV * t))
+    iterations = 3 + step % 4
+    if corrupt:
+        V += 100.0
+        iterations = 100
+    v = [V * c for c in ghat]                 # velocity along gravity
+    x = [-0.5 * V * t * c for c in ghat]      # not analysed
+    force = [-drag * c for c in ghat]         # against gravity
+    values = ([t] + x + v + force
+              + [D, 0.8 * D * D, 0.5 * MASS * V * V, 1.0, -MASS * G * x[2],
+                 iterations, 1e-4, 0.01, 12]
+              + ([0.1 * t, -7.0, 1e3] if frame else []))
+    return " ".join("%.17g" % value for value in values)
+
+
+COLUMN_LINE = ("# time payload_x payload_y payload_z payload_Ux payload_Uy"
+               " payload_Uz force_x force_y force_z projected_diameter"
+               " canopy_area kinetic spring gravity coupling_iterations"
+               " residual slip substeps")
+
+
+def write_dat(path, header, times, ghat, f_breath=F_BREATH, corrupt_from=None,
+              tail="", frame=False, columns=COLUMN_LINE):
+    """frame: the solver's later layout, 3 more columns frame_x/y/z."""
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    with open(path, "w") as f:
+        for line in header:
+            f.write(line + "\n")
+        f.write(columns + (" frame_x frame_y frame_z" if frame else "")
+                + "\n")
+        for step, t in times:
+            bad = corrupt_from is not None and t > corrupt_from + 1e-9
+            f.write(row(t, ghat, f_breath, bad, step, frame) + "\n")
+        f.write(tail)
+
+
+def steps(first, last):
+    """(step index, time) for steps first..last of size DT."""
+    return [(n, n * DT) for n in range(first, last + 1)]
+
+
+HEADER = ["# nominalDiameter %g" % D0, "# totalMass %g" % MASS,
+          "# rho %g" % RHO, "# gravity 0 0 %g" % -G]
+DOWN = (0.0, 0.0, -1.0)
+
+
+def make_restarted_case(case):
+    base = os.path.join(case, "postProcessing", "canopy")
+    # folder 0: steps 1..1300 (t = 0.01 .. 13, beyond the restarts' end);
+    # rows after t = 4 are wrong
+    write_dat(os.path.join(base, "0", "canopy.dat"), HEADER, steps(1, 1300),
+              DOWN, corrupt_from=4.0)
+    # folder 4: restart from 4, steps 401..1050; rows after t = 10 are wrong
+    write_dat(os.path.join(base, "4", "canopy.dat"), HEADER,
+              steps(401, 1050), DOWN, corrupt_from=10.0)
+    # folder 10: restart from 10, steps 1001..1200, then a line cut short;
+    # written as the solver now does: a title line, 3 frame columns more
+    write_dat(os.path.join(base, "10", "canopy.dat"),
+              ["# canopyFoam time series of the canopy (ground frame)"]
+              + HEADER, steps(1001, 1200), DOWN, tail="12.01 0 0 -4.0",
+              frame=True)
+
+
+def test_restarts_and_statistics(tmp):
+    case = os.path.join(tmp, "restarted")
+    make_restarted_case(case)
+    r = report.analyse(case)
+    series = r["_series"]
+    t = series.t
+
+    # Concatenation of the restarts
+    check("restart order", [f["startTime"] for f in r["files"]] == [0, 4, 10],
+          "folders taken in the order %s (expected 0, 4, 10)"
+          % [f["startTime"] for f in r["files"]])
+    check("restart steps", r["steps"] == 1200 and
+          abs(t[0] - 0.01) < 1e-12 and abs(t[-1] - 12.0) < 1e-12,
+          "%d steps, t = %.10g .. %.10g (expected 1200, 0.01 .. 12)"
+          % (r["steps"], t[0], t[-1]))
+    dt = [b - a for a, b in zip(t[:-1], t[1:])]
+    check("restart time axis", max(abs(d - DT) for d in dt) < 1e-9,
+          "steps between %.12g and %.12g s (expected all %.2g)"
+          % (min(dt), max(dt), DT))
+    check("restart overrides", r["overriddenRows"] == 950 and
+          [f["used"] for f in r["files"]] == [400, 600, 200],
+          "%d rows overridden (expected 900 + 50), rows used per folder %s "
+          "(expected [400, 600, 200])"
+          % (r["overriddenRows"], [f["used"] for f in r["files"]]))
+    vmax = float(max(r["_descent"]))
+    check("restart wrong rows gone", vmax < VT + AV + 1e-9,
+          "largest descent speed %.6g m/s (the overridden rows hold > 100)"
+          % vmax)
+    check("restart truncated line", r["skippedLines"] == 1,
+          "%d bad line(s) skipped (expected the 1 cut short)"
+          % r["skippedLines"])
+
+    # The steady interval: last third of 0 .. 12
+    s = r["steady"]
+    check("steady interval", abs(s["start"] - 8.0) < 1e-9 and
+          abs(s["end"] - 12.0) < 1e-9 and s["samples"] == 401,
+          "t = %.10g .. %.10g, %d samples (expected 8 .. 12, 401)"
+          % (s["start"], s["end"], s["samples"]))
+
+    # Terminal velocity, spread, extremes
+    v = r["descentVelocity"]
+    mean_exact = VT - VT * TAU * (math.exp(-8 / TAU) - math.exp(-12 / TAU)) / 4
+    close("terminal velocity mean", v["mean"], mean_exact, 1e-6, "m/s")
+    close("terminal velocity std", v["std"], AV / math.sqrt(2), 1e-6, "m/s")
+    # sampled extremes of the sine miss the true ones by at most
+    # aV (1 - cos(pi fV dt)) (half a step from the crest)
+    crest = AV * (1 - math.cos(math.pi * FV * DT)) + 1e-9
+    close("terminal velocity max", v["max"], VT + AV, crest, "m/s")
+    close("terminal velocity min", v["min"], VT - AV, crest, "m/s")
+    # drift = least-squares slope x interval length; the sine's slope over
+    # whole periods is -12 aV cos(w t1 + phi) / (w T^2) for continuous data
+    # (-9.1e-3 m/s here); the 401 samples give it to O(1/N): recomputed
+    # from the sums, to round-off.
+    ts = [x for x in t if x >= 8.0 - 1e-9]
+    ys = list(r["_descent"][-len(ts):])
+    tm, ym = sum(ts) / len(ts), sum(ys) / len(ys)
+    slope = (sum((a - tm) * (b - ym) for a, b in zip(ts, ys))
+             / sum((a - tm) ** 2 for a in ts))
+    w = 2 * math.pi * FV
+    continuous = -12 * AV * math.cos(w * 12 + PHIV) / (w * 4.0)
+    close("terminal velocity drift (continuous %.4g)" % continuous,
+          v["drift"], slope * 4.0, 1e-9, "m/s")
+    check("steady (no warning)", not s["warning"], repr(s["warning"]))
+
+    # Breathing at 2 Hz: N = 401, N dt = 4.01 s, df = 0.2494 Hz;
+    # 2 Hz is 8.02 bins, so the peak bin is 8 and its centre within df/2.
+    b = r["breathing"]
+    df = b["resolution"]
+    close("breathing resolution", df, 1 / (401 * DT), 1e-12, "Hz")
+    check("breathing resolved", b["resolved"] and b["peakBin"] == 8,
+          "resolved %s, peak bin %s (expected True, 8)"
+          % (b["resolved"], b["peakBin"]))
+    close("breathing peak bin within df/2", b["binFrequency"], F_BREATH,
+          df / 2, "Hz")
+    # The Hann ratio refinement is exact for one complex tone; what is left
+    # is the leakage of the tone's image at -f (~(2k)^-3 = 2e-4 of the peak
+    # at k = 8) and of the detrended tail: 0.02 df bounds it with margin.
+    close("breathing refined frequency", b["frequency"], F_BREATH, 0.02 * df,
+          "Hz")
+    # amplitude: the Hann scaling shows aD for a tone on a bin; 0.02 bins
+    # off it loses (1 - sinc-type factor) < 0.2 %, the image adds < 0.1 %
+    close("breathing amplitude", b["amplitude"], AD, 0.01 * AD, "m")
+
+    # Drag coefficients, by hand: W = 6.02 * 9.81 = 59.0562 N,
+    # S0 = pi 2.134^2 / 4 = 3.576669 m^2, q = 0.6 * 4^2 = 9.6 Pa,
+    # C_D = 59.0562 / (9.6 * 3.576669) = 1.719949; the pressure force
+    # carries 0.9 W: C_D = 1.547954. (V differs from 4 by 1.4e-8 relative.)
+    cd = r["dragCoefficient"]
+    close("C_D weight balance", cd["weightBalance"], 1.719949, 2e-6)
+    close("C_D pressure force", cd["pressureForce"], 1.547954, 2e-6)
+    close("weight", cd["weight"], 59.0562, 1e-9, "N")
+    close("nominal area", cd["nominalArea"], 3.5766687, 1e-7, "m^2")
+
+    # Coupling iterations 3,4,5,6,... over 1200 steps (the wrong rows say 100)
+    c = r["coupling"]
+    close("mean coupling iterations", c["meanIterations"], 4.5, 1e-12)
+    return case, r
+
+
+def test_half_bin_and_direction(tmp):
+    """Breathing half-way between two bins, gravity along -y."""
+    case = os.path.join(tmp, "halfbin")
+    f_half = 8.5 / (401 * DT)      # 8.5 bins of the 401-sample interval
+    header = ["# nominalDiameter %g" % D0, "# totalMass %g" % MASS,
+              "# rho %g" % RHO, "# gravity 0 %g 0" % -G]
+    write_dat(os.path.join(case, "postProcessing", "canopy", "0",
+                           "canopy.dat"), header, steps(1, 1200),
+              (0.0, -1.0, 0.0), f_breath=f_half)
+    r = report.analyse(case)
+    b = r["breathing"]
+    df = b["resolution"]
+    close("half-bin peak bin within df/2", b["binFrequency"], f_half,
+          df / 2 + 1e-12, "Hz")
+    close("half-bin refined frequency", b["frequency"], f_half, 0.02 * df,
+          "Hz")
+    mean_exact = VT - VT * TAU * (math.exp(-8 / TAU) - math.exp(-12 / TAU)) / 4
+    close("gravity along -y: descent speed", r["descentVelocity"]["mean"],
+          mean_exact, 1e-6, "m/s")
+    close("gravity along -y: C_D pressure force",
+          r["dragCoefficient"]["pressureForce"], 1.547954, 2e-6)
+
+
+def test_not_resolved(tmp):
+    """0 .. 1.2 s: the last third holds 0.8 breathing periods."""
+    case = os.path.join(tmp, "short")
+    write_dat(os.path.join(case, "postProcessing", "canopy", "0",
+                           "canopy.dat"), HEADER, steps(1, 120), DOWN)
+    r = report.analyse(case)
+    b = r["breathing"]
+    check("short run: breathing not resolved",
+          not b["resolved"] and b["frequency"] is None
+          and "not resolved" in report.format_summary(r),
+          "resolved %s, peak bin %s, resolution %.3g Hz, note '%s'"
+          % (b["resolved"], b["peakBin"], b["resolution"], b["note"]))
+
+
+def test_missing_quantities(tmp):
+    case = os.path.join(tmp, "missing")
+    write_dat(os.path.join(case, "postProcessing", "canopy", "0",
+                           "canopy.dat"),
+              ["# rho %g" % RHO, "# gravity 0 0 %g" % -G], steps(1, 300),
+              DOWN)
+    try:
+        report.analyse(case)
+        check("missing quantities raise", False, "no error raised")
+    except report.MissingQuantityError as e:
+        text = str(e)
+        check("missing quantities raise",
+              e.missing == ["nominalDiameter", "totalMass"]
+              and "nominal diameter" in text and "--diameter" in text
+              and "total mass" in text and "--mass" in text
+              and "rho" not in e.missing,
+              "missing %s; message: %s" % (e.missing, text.replace("\n",
+                                                                   " | ")))
+    # a column-name line without a column the analysis needs
+    bad = os.path.join(tmp, "badcolumns")
+    write_dat(os.path.join(bad, "postProcessing", "canopy", "0",
+                           "canopy.dat"), HEADER, steps(1, 30), DOWN,
+              columns=COLUMN_LINE.replace("projected_diameter",
+                                          "diameter"))
+    try:
+        report.analyse(bad)
+        check("missing column raises", False, "no error raised")
+    except report.ReportError as e:
+        check("missing column raises", "projected_diameter" in str(e),
+              str(e))
+    # the command line names them too, and exits 1
+    tool = os.path.join(ROOT, "bin", "canopy-report")
+    p = subprocess.run([tool, case, "--no-plots"], stdout=subprocess.PIPE,
+                       stderr=subprocess.PIPE, universal_newlines=True)
+    check("missing quantities: canopy-report exits 1",
+          p.returncode == 1 and "nominal diameter" in p.stderr
+          and "--mass" in p.stderr,
+          "exit %d, stderr: %s" % (p.returncode, p.stderr.strip()
+                                   .replace("\n", " | ")))
+    # options fill in and override: --rho 1.0 instead of the header's 1.2
+    r = report.analyse(case, diameter=D0, mass=MASS, rho=1.0)
+    p = r["parameters"]
+    check("options fill in and override the header",
+          p["nominalDiameter"]["source"] == "--diameter"
+          and p["rho"]["value"] == 1.0 and p["rho"]["source"] == "--rho"
+          and p["gravity"]["source"] == "canopy.dat header",
+          "sources: %s" % {k: (v["value"], v["source"]) for k, v in p.items()})
+
+
+def test_command_line(tmp, case, expected):
+    """bin/canopy-report on the restarted case: files, stdout, JSON."""
+    tool = os.path.join(ROOT, "bin", "canopy-report")
+    out = os.path.join(tmp, "out")
+    p = subprocess.run([tool, case, "--out", out, "--reference", "7ft"],
+                       stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                       universal_newlines=True)
+    print("---- canopy-report output ----\n" + p.stdout + p.stderr
+          + "------------------------------")
+    check("canopy-report exits 0", p.returncode == 0,
+          "exit %d" % p.returncode)
+    names = ["descentVelocity.png", "projectedDiameter.png", "summary.txt",
+             "report.json"]
+    sizes = {n: (os.path.getsize(os.path.join(out, n))
+                 if os.path.isfile(os.path.join(out, n)) else 0)
+             for n in names}
+    check("canopy-report files", all(v > 0 for v in sizes.values()),
+          "sizes %s" % sizes)
+    for n in names[:2]:
+        path = os.path.join(out, n)
+        with open(path, "rb") as f:
+            check("%s is a PNG" % n, f.read(8) == b"\x89PNG\r\n\x1a\n",
+                  "%d bytes" % sizes[n])
+    if sizes["summary.txt"]:
+        with open(os.path.join(out, "summary.txt")) as f:
+            summary = f.read()
+        check("summary.txt = stdout", summary == p.stdout,
+              "%d lines" % summary.count("\n"))
+        check("summary names the interval and reference",
+              "t = 8 .. 12 s" in summary and "4.27" in summary
+              and "last 1/3" in summary, "")
+    if sizes["report.json"]:
+        with open(os.path.join(out, "report.json")) as f:
+            data = json.load(f)
+        close("report.json terminal velocity",
+              data["descentVelocity"]["mean"],
+              expected["descentVelocity"]["mean"], 1e-12, "m/s")
+        close("report.json breathing", data["breathing"]["frequency"],
+              expected["breathing"]["frequency"], 1e-12, "Hz")
+    # --steady-start 6: 601 samples; V mean still Vt within the tail
+    r = report.analyse(case, steady_start=6.0)
+    s = r["steady"]
+    check("--steady-start", abs(s["start"] - 6) < 1e-9 and s["samples"] == 601,
+          "t = %.10g .. %.10g, %d samples (expected 6 .. 12, 601)"
+          % (s["start"], s["end"], s["samples"]))
+    mean_exact = VT - VT * TAU * (math.exp(-6 / TAU) - math.exp(-12 / TAU)) / 6
+    close("--steady-start terminal velocity", r["descentVelocity"]["mean"],
+          mean_exact, 1e-6, "m/s")
+
+
+def main():
+    tmp = tempfile.mkdtemp(prefix="canopy-report-")
+    try:
+        case, r = test_restarts_and_statistics(tmp)
+        test_half_bin_and_direction(tmp)
+        test_not_resolved(tmp)
+        test_missing_quantities(tmp)
+        test_command_line(tmp, case, r)
+    except Exception as e:  # an unexpected error is a failure too
+        import traceback
+        traceback.print_exc()
+        failures.append("exception: %s" % e)
+    if failures:
+        print("FAIL: %d check(s) failed: %s; files kept in %s"
+              % (len(failures), ", ".join(failures), tmp))
+        return 1
+    shutil.rmtree(tmp, ignore_errors=True)
+    print("PASS: all report checks")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
