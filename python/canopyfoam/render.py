@@ -22,6 +22,10 @@ bounding box, which holds the payload axis of a symmetric canopy. "Up" is
 -gravity from constant/canopyProperties (else canopy.dat's header, else +z).
 A case without fields gets canopy.png only; a case without canopy.xdmf
 gets velocitySlice.png only (sliced through the mesh centre); both say so.
+Frame: the structure is written in the ground frame; when the mesh follows
+the payload (canopy.dat has frame_x frame_y frame_z columns that move), the
+canopy is drawn moved by minus the frame's origin at its time, so that it
+sits where the solver put its markers.
 """
 
 import argparse
@@ -155,11 +159,103 @@ def nearest_time(times, wanted):
     return min(times, key=lambda t: abs(t - wanted)) if times else None
 
 
+def frame_table(case):
+    """[(t, (x, y, z))] of the mesh frame's origin in the ground frame, from
+    the frame_x frame_y frame_z columns of postProcessing/canopy/*/
+    canopy.dat (restarts: a later file replaces the rows from its first
+    time on); [] when there are no such columns or the origin never moves
+    (a fixed frame)."""
+    base = os.path.join(case, "postProcessing", "canopy")
+    if not os.path.isdir(base):
+        return []
+    table = []
+    for name in sorted((n for n in os.listdir(base) if _is_time(n)),
+                       key=float):
+        path = os.path.join(base, name, "canopy.dat")
+        if not os.path.isfile(path):
+            continue
+        rows, index = [], None
+        with open(path) as f:
+            for line in f:
+                tokens = line.split()
+                if not tokens:
+                    continue
+                if tokens[0] == "#":
+                    if len(tokens) > 1 and tokens[1] == "time" and \
+                            "frame_x" in tokens:
+                        names = tokens[1:]
+                        index = [names.index(c) for c in
+                                 ("time", "frame_x", "frame_y", "frame_z")]
+                        width = len(names)
+                    continue
+                if index is None or len(tokens) != width:
+                    continue
+                try:
+                    t, x, y, z = (float(tokens[i]) for i in index)
+                except ValueError:
+                    continue
+                rows.append((t, (x, y, z)))
+        if rows:
+            first = rows[0][0]
+            table = [r for r in table
+                     if r[0] < first - 1e-9 * max(1.0, abs(first))] + rows
+    if all(o == (0.0, 0.0, 0.0) for _, o in table):
+        return []
+    return table
+
+
+def frame_origin(table, t):
+    """The frame origin of the table entry nearest t ((0, 0, 0) if none)."""
+    if not table:
+        return (0.0, 0.0, 0.0)
+    return min(table, key=lambda row: abs(row[0] - t))[1]
+
+
+# The canopy in the mesh's frame at the data's time, for the GUI, whose
+# animation steps through the times: each point minus the frame origin.
+# (The filter runs its script among numpy_interface.algorithms' names, whose
+# min and sum are not the builtins: hence builtins.min.)
+_TO_MESH_FRAME = """
+import builtins
+from vtkmodules.vtkCommonCore import vtkPoints
+from vtkmodules.vtkCommonDataModel import vtkDataObject
+from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
+
+table = TABLE
+inp = self.GetInputDataObject(0, 0)
+out = self.GetOutputDataObject(0)
+info = inp.GetInformation()
+t = (info.Get(vtkDataObject.DATA_TIME_STEP())
+     if info.Has(vtkDataObject.DATA_TIME_STEP()) else table[-1][0])
+origin = builtins.min(table, key=lambda row: abs(row[0] - t))[1]
+
+
+def shift(src, dst):
+    dst.ShallowCopy(src)
+    if src.GetPoints() is None:
+        return
+    x = vtk_to_numpy(src.GetPoints().GetData()).astype(float)
+    points = vtkPoints()
+    points.SetData(numpy_to_vtk(x - origin, deep=1))
+    dst.SetPoints(points)
+
+
+if inp.IsA("vtkCompositeDataSet"):
+    out.CopyStructure(inp)
+    it = inp.NewIterator()
+    it.InitTraversal()
+    while not it.IsDoneWithTraversal():
+        block = it.GetCurrentDataObject()
+        moved = block.NewInstance()
+        shift(block, moved)
+        out.SetDataSet(it, moved)
+        it.GoToNextItem()
+else:
+    shift(inp, out)
+"""
+
+
 # ---- vector helpers --------------------------------------------------------
-
-def _sub(a, b):
-    return [x - y for x, y in zip(a, b)]
-
 
 def _add(a, b, s=1.0):
     return [x + s * y for x, y in zip(a, b)]
@@ -214,6 +310,7 @@ class Scene(object):
         self.size = 1.0             # length scale of what is shown
         self.structure_bounds = None
         self.up = [0.0, 0.0, 1.0]
+        self.frame = []             # frame_table(): [] for a fixed frame
         self.notes = []
 
 
@@ -304,13 +401,35 @@ def build_scene(case, time=None, up=None, pin_canopy_time=True, log=print):
             keeper = simple.GetTimeKeeper()
             keeper.SuppressedTimeSources.append(source)
             keeper.SuppressedTimeSources.append(reader)
+        log("canopy: %s, %d write time(s), showing t = %g"
+            % (xdmf, len(scene.canopy_times), scene.canopy_time))
+        scene.frame = frame_table(case)
+        if scene.frame and pin_canopy_time:
+            # the structure is written in the ground frame, the mesh
+            # follows the payload: move the canopy into the mesh's frame
+            source = simple.Transform(Input=source)
+            source.Transform = "Transform"
+            source.Transform.Translate = [
+                -x for x in frame_origin(scene.frame, scene.canopy_time)]
+        elif scene.frame:
+            # the same at whatever time the animation shows (ParaView runs
+            # the filter's script in __main__, whose min, max, sum ... it
+            # replaces with numpy_interface's: fine in the GUI)
+            source = simple.ProgrammableFilter(Input=source)
+            source.Script = _TO_MESH_FRAME.replace(
+                "TABLE", repr([(t, list(o)) for t, o in scene.frame]))
+            source.CopyArrays = 0
+        if scene.frame:
+            log("frame: the mesh follows the payload; the canopy is moved "
+                "by -(%s) m at t = %g, the frame's origin in canopy.dat"
+                % (" ".join("%.4g" % x for x in
+                            frame_origin(scene.frame, scene.canopy_time)),
+                   scene.canopy_time))
         scene.canopy = source
         scene.surface = simple.ExtractCellsByType(Input=source)
         scene.surface.CellTypes = list(SURFACE_TYPES)
         scene.lines = simple.ExtractCellsByType(Input=source)
         scene.lines.CellTypes = list(LINE_TYPES)
-        log("canopy: %s, %d write time(s), showing t = %g"
-            % (xdmf, len(scene.canopy_times), scene.canopy_time))
         if scene.time is not None and abs(scene.canopy_time - scene.time) > \
                 1e-6 * max(1.0, abs(scene.time)):
             scene.notes.append("the canopy is shown at t = %g, its write "
@@ -581,8 +700,10 @@ def render_case(case, out=None, time=None, size=(1200, 900), up=None,
             bounds = slice_frame(scene)
         slice_camera(scene, view, bounds)
         _title(simple, view, "%s: velocity magnitude on the plane x = %.4g m, "
-               "t = %g s"
-               % (name, scene.origin[0], scene.time))
+               "t = %g s%s"
+               % (name, scene.origin[0], scene.time,
+                  " (mesh frame, following the payload)" if scene.frame
+                  else ""))
         simple.Render(view)
         path = os.path.join(out, "velocitySlice.png")
         simple.SaveScreenshot(path, view, ImageResolution=list(size))
@@ -689,4 +810,9 @@ def main(argv=None):
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    # Run from the imported module, not from __main__, whose names
+    # ParaView's programmable filters overwrite (min, sum, ...)
+    sys.path.insert(0, os.path.dirname(os.path.dirname(
+        os.path.abspath(__file__))))
+    from canopyfoam import render as _render
+    sys.exit(_render.main())

@@ -8,8 +8,11 @@ Run as:  xvfb-run -a pvpython tests/paraview/test_render.py
   centres c, so the latest time and the slice position can be read back;
 - the canopy: build/canopy/bin/canopyDropDemo (7 ft canopy, centred on the
   z axis, skirt at z = 0, payload at z ~ -1.7) for 0.02 s, written every
-  0.01 s as postProcessing/canopy/canopy.{h5,xdmf}.
-Checks: the scene picks t = 0.02 of [0, 0.02]; the slice plane passes
+  0.01 s as postProcessing/canopy/canopy.{h5,xdmf}, and a canopy.dat in
+  the solver's layout whose frame columns say that the mesh follows the
+  payload: frame origin z = -0.25 m at t = 0.01, -0.5 m at t = 0.02.
+Checks: the scene picks t = 0.02 of [0, 0.02]; the canopy is drawn in the
+mesh frame (the written structure moved up by 0.5 m); the slice plane passes
 through the canopy centre (x ~ 0, inside the cell column x = -0.1 .. 0.5
 whose centre is 0.2: every sliced cell's U_x is 0.2 within the reader's
 single precision, 1e-6); the slice holds the 5 x 8 cut cells with U as
@@ -175,6 +178,30 @@ boundaryField
           + "internalField nonuniform List<vector>\n%d\n(\n%s\n)\n;\n"
           % (len(cells), values) + boundary)
     add_canopy(case, tmp)
+    write_frame_series(case)
+
+
+def frame_z(t):
+    """The test's frame origin z [m]: the mesh follows a payload that has
+    fallen 25 t m (canopy.dat rows at t = 0.01 and 0.02)."""
+    return -25.0 * t
+
+
+def write_frame_series(case):
+    """canopy.dat in the solver's layout with moving frame columns."""
+    path = os.path.join(case, "postProcessing", "canopy", "0", "canopy.dat")
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    with open(path, "w") as f:
+        f.write("# canopyFoam time series of the canopy (ground frame)\n"
+                "# nominalDiameter 2.134\n# totalMass 6.02\n# rho 1.2\n"
+                "# gravity 0 0 -9.81\n"
+                "# time payload_x payload_y payload_z payload_Ux payload_Uy"
+                " payload_Uz force_x force_y force_z projected_diameter"
+                " canopy_area kinetic spring gravity coupling_iterations"
+                " residual slip substeps frame_x frame_y frame_z\n")
+        for t in (0.01, 0.02):
+            f.write(" ".join(["%g" % t] + ["0"] * 18
+                             + ["0", "0", "%.17g" % frame_z(t)]) + "\n")
 
 
 def add_canopy(case, tmp):
@@ -270,6 +297,20 @@ def test_full_case(tmp):
           abs(scene.origin[0]) < 0.05 and abs(scene.origin[1]) < 0.05,
           "origin (%.3g %.3g %.3g); the 7 ft canopy is centred on the z "
           "axis" % tuple(scene.origin))
+    # the canopy in the mesh frame: the ground-frame structure moved by
+    # -frame origin = +0.5 m in z at t = 0.02 (double precision: 1e-9)
+    from paraview import simple
+    reader = simple.FindSource("Xdmf3ReaderS1")
+    reader.UpdatePipeline(scene.canopy_time)
+    ground = reader.GetDataInformation().GetBounds()
+    moved = scene.structure_bounds
+    shift = -frame_z(0.02)
+    check("canopy moved into the mesh frame",
+          abs(moved[4] - (ground[4] + shift)) < 1e-9
+          and abs(moved[5] - (ground[5] + shift)) < 1e-9
+          and abs(moved[0] - ground[0]) < 1e-9,
+          "z %.6f .. %.6f shown, %.6f .. %.6f written + %g"
+          % (moved[4], moved[5], ground[4], ground[5], shift))
     cell_u, point_u = slice_cell_arrays(scene.slice)
     check("slice has U", len(cell_u) == NY * NZ and point_u > 0,
           "%d cells with cell U (expected %d x %d), %d points with point U"
@@ -349,7 +390,8 @@ bounds = []
 for tc in scene.canopy_times[-2:]:
     reader.UpdatePipeline(tc)
     bounds.append(reader.GetDataInformation().GetBounds())
-print("CANOPYTIME %r %r %r %r" % (t, shown[4], bounds[1][4], bounds[0][4]))
+print("CANOPYTIME %r %r %r %r" % (t, shown[4], bounds[1][4] + 0.5,
+                                  bounds[0][4] + 0.25))
 simple.SaveScreenshot(os.environ["CANOPY_TEST_PNG"], simple.GetActiveView(),
                       ImageResolution=[WIDTH, HEIGHT])
 """.replace("WIDTH", str(SIZE[0])).replace("HEIGHT", str(SIZE[1]))
@@ -379,6 +421,7 @@ def test_gui_script(tmp, case):
     check("canopyCase.py pipeline", rc == 0 and all(n in names for n in want)
           and "SLICE True" in output,
           "exit %d, sources %s" % (rc, names))
+    # (+0.5 and +0.25 m: minus the frame origins at the two writes)
     shown = [l.split()[1:] for l in lines if l.startswith("CANOPYTIME ")]
     if check("canopyCase.py canopy time", len(shown) == 1,
              "the driver printed %d CANOPYTIME line(s)" % len(shown)):
@@ -388,7 +431,8 @@ def test_gui_script(tmp, case):
               # payload falls 1.5e-3 m between the two writes
               abs(z - z_last) < 1e-6 and abs(z - z_before) > 1e-4,
               "lowest line point z = %r shown, %r at the last write, %r at "
-              "the one before" % (z, z_last, z_before))
+              "the one before, both in the mesh frame"
+              % (z, z_last, z_before))
     # the slice, seen at an angle, fills ~30 % of this view
     check_png("canopyCase.py view", png, 50, 0.15)
 
