@@ -6,7 +6,6 @@
 #include "canopyCoupling.H"
 #include "extrapolatedCalculatedFvPatchFields.H"
 #include "surfaceInterpolate.H"
-#include "IOField.H"
 #include "canopy.h"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -213,6 +212,16 @@ void Foam::canopyCoupling::placeMarkers()
 }
 
 
+void Foam::canopyCoupling::returnToStepStart()
+{
+    structure_.restore();
+    placeMarkers();
+    updateStencils();
+    markerForceTotal_ = markerForceStart_;
+    spreadForce();
+}
+
+
 void Foam::canopyCoupling::writeSeries()
 {
     if (!Pstream::master())
@@ -349,7 +358,6 @@ Foam::canopyCoupling::canopyCoupling
     const scalar omega0 = dict.getOrDefault<scalar>("initialRelaxation", 0.5);
     const scalar omegaMax = dict.getOrDefault<scalar>("maxRelaxation", 1);
     stopIfNotConverged_ = dict.getOrDefault<bool>("stopIfNotConverged", true);
-
 
     const word tangential(dict.getOrDefault<word>("tangential", "noSlip"));
     if (tangential != "noSlip" && tangential != "free")
@@ -704,11 +712,7 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
     {
         failure_ = "at t = " + mesh_.time().timeName() + ", " + problem;
         // Markers and stencils back at the step's start for what follows
-        structure_.restore();
-        placeMarkers();
-        updateStencils();
-        markerForceTotal_ = markerForceStart_;
-        spreadForce();
+        returnToStepStart();
         converged_ = true;
         return true;            // ends the outer loop
     }
@@ -776,14 +780,10 @@ bool Foam::canopyCoupling::endTimeStep()
     if (failed())
     {
         // Back to the last good state (the start of this step)
-        structure_.restore();
-        structure_.commit();
         frameVelocity_ = frameVelocityStart_;
         frameAcceleration_ = Zero;
-        placeMarkers();
-        updateStencils();
-        markerForceTotal_ = markerForceStart_;
-        spreadForce();
+        returnToStepStart();
+        structure_.commit();
         return false;
     }
 
