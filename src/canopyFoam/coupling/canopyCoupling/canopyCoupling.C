@@ -12,6 +12,7 @@
 
 Foam::string Foam::canopyCoupling::updateStencils()
 {
+    sectionTimer timer(ibSeconds_);
     const canopyMarkers& mk = markers_();
     velocityStencil_->update(mk.points());
 
@@ -68,6 +69,7 @@ Foam::tmp<Foam::scalarField> Foam::canopyCoupling::markerVolumes() const
 
 void Foam::canopyCoupling::spreadForce()
 {
+    sectionTimer timer(ibSeconds_);
     vectorField f(mesh_.nCells(), Zero);
     velocityStencil_->spread(markerForceTotal_, f);
     force_.primitiveFieldRef() = f;
@@ -324,7 +326,9 @@ Foam::canopyCoupling::canopyCoupling
     frameVelocity_(Zero),
     frameAcceleration_(Zero),
     frameVelocityStart_(Zero),
-    failure_()
+    failure_(),
+    structureSeconds_(0),
+    ibSeconds_(0)
 {
     const dictionary& dict = structure_.dict().subOrEmptyDict("coupling");
 
@@ -535,6 +539,7 @@ Foam::tmp<Foam::volVectorField> Foam::canopyCoupling::forcingIncrement
 )
 {
     const scalar dt = mesh_.time().deltaTValue();
+    sectionTimer timer(ibSeconds_);
     const canopyMarkers& mk = markers_();
     const scalarField dV(markerVolumes());
     const vectorField& n = mk.normals();
@@ -596,6 +601,7 @@ const Foam::surfaceScalarField& Foam::canopyCoupling::faceForce() const
 {
     if (!faceForce_.valid())
     {
+        sectionTimer timer(ibSeconds_);
         faceForce_.reset
         (
             new surfaceScalarField
@@ -664,16 +670,26 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
     const canopyMarkers& mk = markers_();
 
     // Pressure jump dp = rho (p- - p+) per marker, then per triangle
-    const scalarField pPlus(plusStencil_->interpolate(p));
-    const scalarField pMinus(minusStencil_->interpolate(p));
-    const scalarField dpMarker(rho_*(pMinus - pPlus));
+    scalarField dpMarker;
+    {
+        sectionTimer timer(ibSeconds_);
+        const scalarField pPlus(plusStencil_->interpolate(p));
+        const scalarField pMinus(minusStencil_->interpolate(p));
+        dpMarker = rho_*(pMinus - pPlus);
+    }
     pressureForce_ = sum(dpMarker*mk.areas()*mk.normals());
 
-    structure_.restore();
-    structure_.setPressureJump(mk.triangleAverage(dpMarker));
     label substeps = 0;
     string message;
-    if (!structure_.tryAdvance(mesh_.time().deltaTValue(), substeps, message))
+    bool advanced = false;
+    {
+        sectionTimer timer(structureSeconds_);
+        structure_.restore();
+        structure_.setPressureJump(mk.triangleAverage(dpMarker));
+        advanced =
+            structure_.tryAdvance(mesh_.time().deltaTValue(), substeps, message);
+    }
+    if (!advanced)
     {
         failure_ =
             "the structure's time step to t = " + mesh_.time().timeName()
@@ -787,7 +803,10 @@ bool Foam::canopyCoupling::endTimeStep()
         return false;
     }
 
-    structure_.commit();
+    {
+        sectionTimer timer(structureSeconds_);
+        structure_.commit();
+    }
 
     // The next step starts from the committed structure's interface
     // velocity (not the relaxed iterate), so that a restart, which knows
@@ -804,6 +823,12 @@ bool Foam::canopyCoupling::endTimeStep()
 
 void Foam::canopyCoupling::writeStructure()
 {
-    structure_.write(mesh_.time());
-    writeCouplingState();
+    {
+        sectionTimer timer(structureSeconds_);
+        structure_.write(mesh_.time());
+        writeCouplingState();
+    }
+    Info<< "canopyCoupling: wall time since the run started: structure "
+        << structureSeconds_ << " s, immersed boundary " << ibSeconds_
+        << " s (the rest of ClockTime is the fluid)" << endl;
 }

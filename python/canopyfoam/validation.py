@@ -1,0 +1,432 @@
+"""validation.py — the validation studies of canopyFoam: runs tutorial variants (bin/canopy-validate) and writes docs/validation.md from their reports.
+
+A run is a copy of a tutorial in build/validation/<run id>/ with some
+dictionary entries changed (foamDictionary -set) and some options given to
+its Allrun; its Allrun writes postProcessing/report/report.json
+(bin/canopy-report). A study groups runs and says what they are compared
+with. `run` does the runs that have no complete result yet (a run is
+complete when its solver log ends with "End" and its report.json exists);
+`report` reads whatever runs are complete and writes the markdown and the
+plots; a run that is missing or failed is listed as such, with the command
+that makes it.
+
+Only the standard library and numpy are needed to run; matplotlib for the
+plots.
+"""
+
+import argparse
+import json
+import math
+import os
+import re
+import shutil
+import subprocess
+import sys
+import time
+
+import numpy as np
+
+from . import report as rep
+
+TOP = os.path.dirname(os.path.dirname(os.path.dirname(
+    os.path.realpath(__file__))))
+RUN_ROOT = os.path.join(TOP, "build", "validation")
+DOC = os.path.join(TOP, "docs", "validation.md")
+FIG_DIR = os.path.join(TOP, "docs", "validation")
+
+
+class Run:
+    """One tutorial variant: tutorial path under tutorials/, Allrun options,
+    and (dictionary file, entry path, value) edits."""
+
+    def __init__(self, ident, tutorial, label, options=(), edits=(),
+                 reference=None, steady_start=None):
+        self.ident = ident
+        self.tutorial = tutorial
+        self.label = label
+        self.options = list(options)
+        self.edits = list(edits)
+        self.reference = reference
+        self.steady_start = steady_start
+
+    @property
+    def case_dir(self):
+        return os.path.join(RUN_ROOT, self.ident)
+
+    def command(self):
+        return "bin/canopy-validate run %s" % self.ident
+
+
+SEVEN = "parachutes/flatCircular7ft"
+T10 = "parachutes/T10"
+G11 = "parachutes/G11third"
+G11_FOLDED = "parachutes/G11thirdFolded"
+PROPS = "constant/canopyProperties"
+
+RUNS = [
+    Run("7ft-h0.30", SEVEN, "cell 0.30 m", ["-cellSize", "0.3"],
+        reference="7ft"),
+    Run("7ft-h0.20", SEVEN, "cell 0.20 m (default)", reference="7ft"),
+    Run("7ft-h0.15", SEVEN, "cell 0.15 m", ["-cellSize", "0.15"],
+        reference="7ft"),
+    Run("7ft-alpha100", SEVEN, "alpha 100 Pa s/m (more porous)",
+        edits=[(PROPS, "fabric/porosity/alpha", "100")], reference="7ft"),
+    Run("7ft-alpha1e4", SEVEN, "alpha 1e4 Pa s/m (nearly closed)",
+        edits=[(PROPS, "fabric/porosity/alpha", "1e4")], reference="7ft"),
+    Run("T10-m100", T10, "payload 100 kg", reference="T10"),
+    Run("T10-m163", T10, "payload 163 kg",
+        edits=[(PROPS, "payload/mass", "163")], reference="T10"),
+    Run("T10-m300", T10, "payload 300 kg",
+        edits=[(PROPS, "payload/mass", "300")], reference="T10"),
+    Run("T10-m600", T10, "payload 600 kg",
+        edits=[(PROPS, "payload/mass", "600")], reference="T10"),
+    Run("G11-flat", G11, "flat start", reference="G11third"),
+    Run("G11-folded", G11_FOLDED, "folded start (tutorial's fold)",
+        reference="G11third"),
+    Run("G11-folded-deep", G11_FOLDED, "folded start, twice the lift",
+        edits=[("system/canopyFoldDict", "duration", "DOUBLE")],
+        reference="G11third"),
+]
+RUN_BY_ID = {r.ident: r for r in RUNS}
+
+STUDIES = [
+    ("mesh7ft", "7 ft canopy: mesh convergence",
+     ["7ft-h0.30", "7ft-h0.20", "7ft-h0.15"]),
+    ("porosity7ft", "7 ft canopy: the effect of porosity",
+     ["7ft-alpha100", "7ft-h0.20", "7ft-alpha1e4"]),
+    ("T10payload", "T-10: terminal velocity against payload",
+     ["T10-m100", "T10-m163", "T10-m300", "T10-m600"]),
+    ("G11folded", "1/3-scale G-11 from flat and folded starts",
+     ["G11-flat", "G11-folded", "G11-folded-deep"]),
+]
+
+
+# ---- running ---------------------------------------------------------------
+
+def solver_log(case_dir):
+    return os.path.join(case_dir, "log.canopyPimpleFoam")
+
+
+def report_json(case_dir):
+    return os.path.join(case_dir, "postProcessing", "report", "report.json")
+
+
+def run_state(run):
+    """'complete', 'failed' (a solver log without End) or 'missing'."""
+    log = solver_log(run.case_dir)
+    if not os.path.exists(log):
+        return "missing"
+    with open(log, errors="replace") as f:
+        ended = any(line.startswith("End") for line in f)
+    if ended and os.path.exists(report_json(run.case_dir)):
+        return "complete"
+    return "failed"
+
+
+def foam_get(path, entry):
+    out = subprocess.run(["foamDictionary", "-entry", entry, "-value", path],
+                         capture_output=True, text=True)
+    if out.returncode != 0:
+        raise RuntimeError("%s has no entry %s: %s"
+                           % (path, entry, out.stderr.strip()))
+    return out.stdout.strip()
+
+
+def prepare(run):
+    """Fresh copy of the tutorial with the run's edits."""
+    src = os.path.join(TOP, "tutorials", run.tutorial)
+    if not os.path.isdir(src):
+        raise RuntimeError("run %s: no tutorial %s" % (run.ident, src))
+    if os.path.exists(run.case_dir):
+        shutil.rmtree(run.case_dir)
+    shutil.copytree(src, run.case_dir, symlinks=True)
+    for rel, entry, value in run.edits:
+        path = os.path.join(run.case_dir, rel)
+        if value == "DOUBLE":
+            value = "%.10g" % (2 * float(foam_get(path, entry)))
+        out = subprocess.run(["foamDictionary", "-entry", entry, "-set",
+                              value, path], capture_output=True, text=True)
+        if out.returncode != 0:
+            raise RuntimeError("run %s: cannot set %s in %s: %s"
+                               % (run.ident, entry, rel, out.stderr.strip()))
+
+
+def execute(run, ranks):
+    prepare(run)
+    cmd = [os.path.join(run.case_dir, "Allrun"), "-np", str(ranks)]
+    cmd += run.options
+    start = time.time()
+    log = os.path.join(RUN_ROOT, run.ident + ".out")
+    print("canopy-validate: %s (%s) in %s, output in %s"
+          % (run.ident, run.label, run.case_dir, log), flush=True)
+    with open(log, "w") as out:
+        status = subprocess.run(cmd, stdout=out, stderr=subprocess.STDOUT,
+                                cwd=run.case_dir).returncode
+    wall = time.time() - start
+    with open(os.path.join(run.case_dir, "validation-wall-time"), "w") as f:
+        f.write("%.1f %d\n" % (wall, ranks))
+    print("canopy-validate: %s %s after %.0f s" % (
+        run.ident, "done" if status == 0 else "FAILED (status %d)" % status,
+        wall), flush=True)
+    return status == 0
+
+
+def select(names):
+    """Run ids from run ids and study names ('all': every run)."""
+    studies = {s[0]: s[2] for s in STUDIES}
+    chosen = []
+    for name in names:
+        if name == "all":
+            ids = [r.ident for r in RUNS]
+        elif name in studies:
+            ids = studies[name]
+        elif name in RUN_BY_ID:
+            ids = [name]
+        else:
+            raise SystemExit("canopy-validate: unknown run or study '%s' "
+                             "(see --list)" % name)
+        chosen += [i for i in ids if i not in chosen]
+    return chosen
+
+
+# ---- reading results -------------------------------------------------------
+
+def wall_time(case_dir):
+    path = os.path.join(case_dir, "validation-wall-time")
+    try:
+        with open(path) as f:
+            wall, ranks = f.read().split()
+        return float(wall), int(ranks)
+    except (OSError, ValueError):
+        return None, None
+
+
+def cell_count(case_dir):
+    try:
+        with open(os.path.join(case_dir, "log.blockMesh")) as f:
+            m = re.search(r"nCells:\s*(\d+)", f.read())
+        return int(m.group(1)) if m else None
+    except OSError:
+        return None
+
+
+def result(run):
+    """The run's analysis (report.analyse) or None, and its state."""
+    state = run_state(run)
+    if state == "missing":
+        return None, state
+    try:
+        r = rep.analyse(run.case_dir, reference=run.reference,
+                        steady_start=run.steady_start)
+    except (rep.ReportError, OSError) as e:
+        return None, "%s (%s)" % (state, e)
+    return r, state
+
+
+def _f(x, fmt="%.3g"):
+    return "—" if x is None or (isinstance(x, float) and
+                                not math.isfinite(x)) else fmt % x
+
+
+def run_row(run, r, state):
+    wall, ranks = wall_time(run.case_dir)
+    cells = cell_count(run.case_dir)
+    if r is None:
+        return "| %s | %s | %s | %s |  |  |  |  |  |" % (
+            run.ident, run.label, _f(cells, "%d"), state)
+    v = r["descentVelocity"]
+    b = r["breathing"]
+    cd = r["dragCoefficient"]
+    note = r["steady"]["warning"]
+    freq = _f(b.get("frequency"), "%.2f Hz") if b.get("resolved") else \
+        "not resolved"
+    return ("| %s | %s | %s | %s to %.2f s | %.2f ± %.2f%s | %s | %.2f | %s"
+            " | %s |" % (
+                run.ident, run.label, _f(cells, "%d"),
+                "" if state == "complete" else state + ",",
+                r["timeEnd"], v["mean"], v["std"],
+                " (drifting)" if note else "", freq,
+                r["projectedDiameter"]["mean"],
+                _f(cd.get("weightBalance")), "%s / %s" % (
+                    _f(r["coupling"]["meanIterationsSteady"], "%.1f"),
+                    "%s on %s" % (_f(wall / 60 if wall else None, "%.1f min"),
+                                  ranks) if wall else "—")))
+
+
+TABLE_HEAD = ("| run | setting | cells | simulated | terminal velocity "
+              "[m/s] (mean ± std, steady interval) | breathing | mean "
+              "projected D [m] | C_D (weight) | coupling it./step; wall "
+              "time on ranks |\n|---|---|---|---|---|---|---|---|---|")
+
+
+def plot_study(name, title, runs_results, reference_lines=()):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    os.makedirs(FIG_DIR, exist_ok=True)
+    fig, ax = plt.subplots(figsize=(8, 4.5))
+    drawn = 0
+    for run, r in runs_results:
+        if r is None:
+            continue
+        ax.plot(r["_series"].t, r["_descent"], lw=1.1, label=run.label)
+        drawn += 1
+    for value, label, style in reference_lines:
+        ax.axhline(value, color="k", ls=style, lw=1, label=label)
+    if not drawn:
+        plt.close(fig)
+        return None
+    ax.set_xlabel("time [s]")
+    ax.set_ylabel("descent speed [m/s]")
+    ax.set_title(title)
+    ax.grid(True, alpha=0.3)
+    ax.legend(loc="best", fontsize=8)
+    fig.tight_layout()
+    path = os.path.join(FIG_DIR, name + ".png")
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return os.path.relpath(path, os.path.dirname(DOC))
+
+
+def payload_scaling(runs_results):
+    """Terminal velocity against total mass with V ∝ sqrt(M) (seed eq. 5.6)
+    through the lightest complete run: lines for the markdown."""
+    pts = [(r["parameters"]["totalMass"]["value"][0]
+            if isinstance(r["parameters"]["totalMass"]["value"], list)
+            else r["parameters"]["totalMass"]["value"],
+            r["descentVelocity"]["mean"], run) for run, r in runs_results
+           if r is not None]
+    if len(pts) < 2:
+        return ["Fewer than two complete runs: no scaling comparison yet."]
+    pts.sort(key=lambda p: p[0])
+    M0, V0, _ = pts[0]
+    lines = ["| run | total mass [kg] | V [m/s] | V0 sqrt(M/M0) [m/s] | "
+             "difference |", "|---|---|---|---|---|"]
+    for M, V, run in pts:
+        pred = V0 * math.sqrt(M / M0)
+        lines.append("| %s | %.1f | %.2f | %.2f | %+.0f %% |"
+                     % (run.ident, M, V, pred, 100 * (V - pred) / pred))
+    return lines
+
+
+def structure_studies():
+    """The libcanopy test output of the structure-alone studies."""
+    exe = os.path.join(TOP, "build", "canopy", "bin", "canopy-tests")
+    if not os.access(exe, os.X_OK):
+        return ["(build/canopy/bin/canopy-tests is not built: run "
+                "./Allwmake first)"]
+    out = subprocess.run([exe], capture_output=True, text=True).stdout
+    keep, lines = False, []
+    for line in out.splitlines():
+        if line.startswith("Delta E / E0") or line.startswith("Model-I"):
+            keep = True
+        if keep:
+            lines.append(line)
+        if line.startswith("PASS energy_table") or \
+                line.startswith("PASS drum_spectrum"):
+            keep = False
+    return lines
+
+
+def write_report():
+    os.makedirs(os.path.dirname(DOC), exist_ok=True)
+    md = ["# Validation",
+          "",
+          "Generated by `bin/canopy-validate report` from the runs in "
+          "`build/validation/` (made by `bin/canopy-validate run <run or "
+          "study>`, 2 ranks each). Do not edit by hand: re-run the script. "
+          "Generated on %s." % time.strftime("%Y-%m-%d"),
+          "",
+          "Terminal velocity: mean and standard deviation of the payload's "
+          "descent speed over the last third of the run (time weighted); "
+          "\"drifting\" when it still changes by more than its spread over "
+          "that interval. Breathing: peak of the projected diameter's "
+          "spectrum over the same interval. C_D from the weight at the mean "
+          "speed, W = ½ ρ V² S0 C_D. The definitions are those of "
+          "`bin/canopy-report` (python/canopyfoam/report.py).",
+          ""]
+    for name, title, ids in STUDIES:
+        runs = [RUN_BY_ID[i] for i in ids]
+        results = []
+        md += ["## %s" % title, "", TABLE_HEAD]
+        for run in runs:
+            r, state = result(run)
+            results.append((run, r))
+            md.append(run_row(run, r, state))
+        md += ["", "Reproduce: `bin/canopy-validate run %s` then "
+               "`bin/canopy-validate report`." % name, ""]
+        refs = []
+        if name in ("mesh7ft", "porosity7ft"):
+            refs = [(4.27, "drop test 4.27 m/s", "--"),
+                    (3.9, "seed simulation 3.9 m/s", ":")]
+            md += ["Drop test: 4.27 m/s, breathing about 2 Hz; the seed's "
+                   "simulation: 3.9 m/s, 1.6–2.0 Hz (seed 000 §5.7(4), "
+                   "Fig. 5.16).", ""]
+        elif name == "T10payload":
+            md += ["The seed: about 3 to 6 m/s for 100 to 600 kg (§5.6(1)); "
+                   "breathing period about 2 s simulated, 2.3 s measured. "
+                   "Force balance (seed eq. 5.6): V ∝ √M at fixed C_D S0.",
+                   ""]
+            md += payload_scaling(results) + [""]
+        elif name == "G11folded":
+            refs = [(3.0, "seed Fig. 6.2: about 3 m/s", "--")]
+            md += ["The seed: inflation from different folded states "
+                   "converges to one terminal velocity, about 3 m/s "
+                   "(Fig. 6.2).", ""]
+        fig = plot_study(name, title, results, refs)
+        if fig:
+            md += ["![%s](%s)" % (title, fig), ""]
+    md += ["## The structure alone: energy and time-step studies", "",
+           "From `build/canopy/bin/canopy-tests` (the assertions are in "
+           "tests/canopy/test_energy_table.c and test_eigen_bound.c): the "
+           "energy change of Euler, Heun and RK4 at ω·Δt = 0.1 against "
+           "seed Table 5.1 and the prediction χ^(2N) − 1, and the largest "
+           "eigenfrequency of the drum against the bounds of seed ch. 3.",
+           "", "```"] + structure_studies() + ["```", ""]
+    with open(DOC, "w") as f:
+        f.write("\n".join(md))
+    print("canopy-validate: wrote %s" % DOC)
+
+
+def main(argv=None):
+    p = argparse.ArgumentParser(
+        prog="canopy-validate",
+        description="Run the validation studies and write docs/validation.md.")
+    sub = p.add_subparsers(dest="action", required=True)
+    r = sub.add_parser("run", help="run studies or runs that are not "
+                       "complete (see --list)")
+    r.add_argument("names", nargs="+", help="study, run id, or all")
+    r.add_argument("-np", type=int, default=2, help="ranks (default 2)")
+    r.add_argument("--force", action="store_true",
+                   help="re-run complete runs too")
+    sub.add_parser("report", help="write docs/validation.md from the "
+                   "complete runs")
+    sub.add_parser("list", help="list the studies and runs with their state")
+    args = p.parse_args(argv)
+
+    if args.action == "list":
+        for name, title, ids in STUDIES:
+            print("%s: %s" % (name, title))
+            for i in ids:
+                run = RUN_BY_ID[i]
+                print("  %-16s %-9s %s" % (i, run_state(run), run.label))
+        return 0
+    if args.action == "report":
+        write_report()
+        return 0
+    if args.np < 1:
+        raise SystemExit("canopy-validate: -np must be >= 1")
+    os.makedirs(RUN_ROOT, exist_ok=True)
+    ok = True
+    for ident in select(args.names):
+        run = RUN_BY_ID[ident]
+        if run_state(run) == "complete" and not args.force:
+            print("canopy-validate: %s is complete (--force re-runs it)"
+                  % ident)
+            continue
+        try:
+            ok = execute(run, args.np) and ok
+        except RuntimeError as e:
+            print("canopy-validate: %s" % e, file=sys.stderr)
+            ok = False
+    return 0 if ok else 1
