@@ -66,7 +66,18 @@ QUANTITIES = {
     "gravity": ("--gravity", "gravity vector", "m/s^2", 3),
 }
 
-# Published values for comparison (seed 000: Kim 2012, Fig. 5.16, sec. 6.2).
+# Published values for comparison (seed 000: Kim 2012, sec. 5.7, ch. 6).
+# Every entry has a title and nominalDiameter [m]; the values, each
+# optional (only those the seed states):
+#   descentVelocityDropTest          measured steady descent [m/s]
+#   descentVelocitySimulation        the seed's simulated terminal velocity
+#   descentVelocitySimulationSpread  its +- [m/s]
+#   descentVelocitySimulationRange   [lo, hi] simulated over payloadRange
+#   payloadRange                     [lo, hi] payloads of that range [kg]
+#   breathingFrequencyDropTest       measured breathing [Hz]
+#   breathingFrequencySimulation     [lo, hi] the seed's simulation [Hz]
+#   breathingPeriodExperiment        measured breathing period [s]
+#   breathingPeriodSimulation        the seed's simulated period [s]
 REFERENCES = {
     "7ft": {
         "title": "7 ft flat circular canopy, D0 2.134 m, 16 lines, payload "
@@ -77,6 +88,28 @@ REFERENCES = {
         "descentVelocitySimulationSpread": 0.05,
         "breathingFrequencyDropTest": 2.0,
         "breathingFrequencySimulation": [1.6, 2.0],
+    },
+    "T10": {
+        "title": "T-10 parabolic canopy with apex vent, D0 10.7 m, 30 lines "
+                 "x 7.8 m (Kim 2012, sec. 5.7(1), ch. 6)",
+        "nominalDiameter": 10.7,
+        "descentVelocitySimulationRange": [3.0, 6.0],
+        "payloadRange": [100.0, 600.0],
+        "breathingPeriodExperiment": 2.3,
+        "breathingPeriodSimulation": 2.0,
+    },
+    "G11third": {
+        "title": "1/3-scale G-11 flat circular canopy, D0 10.1 m, 30 lines "
+                 "x 9.6 m, payload 150 kg (Kim 2012, Fig. 5.13, ch. 6, "
+                 "Fig. 6.2)",
+        "nominalDiameter": 10.1,
+        "descentVelocitySimulation": 3.0,
+    },
+    "C9": {
+        "title": "C-9 flat circular canopy, D0 8.53 m (28 ft) (Kim 2012, "
+                 "ch. 6, Fig. 6.3)",
+        "nominalDiameter": 8.53,
+        "breathingPeriodSimulation": 2.0,
     },
 }
 
@@ -558,6 +591,49 @@ def _g(x, digits=4):
     return "-" if x is None else "%.*g" % (digits, x)
 
 
+def _reference_descent(ref, v_mean):
+    """The reference's descent velocities as one phrase ('' if none)."""
+    parts = []
+    if "descentVelocityDropTest" in ref:
+        x = ref["descentVelocityDropTest"]
+        parts.append("drop test %.3g m/s (V/ref = %.3f)" % (x, v_mean / x))
+    if "descentVelocitySimulation" in ref:
+        x = ref["descentVelocitySimulation"]
+        text = "seed simulation %.2g" % x
+        if "descentVelocitySimulationSpread" in ref:
+            text += " +- %.2g" % ref["descentVelocitySimulationSpread"]
+        text += " m/s"
+        if "descentVelocityDropTest" not in ref:
+            text += " (V/ref = %.3f)" % (v_mean / x)
+        parts.append(text)
+    if "descentVelocitySimulationRange" in ref:
+        lo, hi = ref["descentVelocitySimulationRange"]
+        text = "seed simulation %.2g-%.2g m/s" % (lo, hi)
+        if "payloadRange" in ref:
+            text += " for payloads %.4g-%.4g kg" % tuple(ref["payloadRange"])
+        parts.append(text)
+    return ", ".join(parts)
+
+
+def _reference_breathing(ref):
+    """The reference's breathing values as one phrase ('' if none)."""
+    parts = []
+    if "breathingFrequencyDropTest" in ref:
+        parts.append("drop test about %.2g Hz"
+                     % ref["breathingFrequencyDropTest"])
+    if "breathingPeriodExperiment" in ref:
+        x = ref["breathingPeriodExperiment"]
+        parts.append("experiment period %.2g s (%.3g Hz)" % (x, 1.0 / x))
+    if "breathingFrequencySimulation" in ref:
+        parts.append("seed simulation %.2g-%.2g Hz"
+                     % tuple(ref["breathingFrequencySimulation"]))
+    if "breathingPeriodSimulation" in ref:
+        x = ref["breathingPeriodSimulation"]
+        parts.append("seed simulation period about %.2g s (%.3g Hz)"
+                     % (x, 1.0 / x))
+    return ", ".join(parts)
+
+
 def format_summary(r):
     """The one-screen summary of a report dict."""
     p = r["parameters"]
@@ -598,13 +674,9 @@ def format_summary(r):
             "(V = v.g/|g|, time-weighted)"
             % (v["mean"], v["std"], v["min"], v["max"]))
     add(line)
-    if ref:
-        add("     ref %-5s drop test %.3g m/s (V/ref = %.3f), seed "
-            "simulation %.2g +- %.2g m/s"
-            % (ref["name"], ref["descentVelocityDropTest"],
-               v["mean"] / ref["descentVelocityDropTest"],
-               ref["descentVelocitySimulation"],
-               ref["descentVelocitySimulationSpread"]))
+    if ref and _reference_descent(ref, v["mean"]):
+        add("     ref %-5s %s" % (ref["name"],
+                                  _reference_descent(ref, v["mean"])))
     add("  diameter     %.4g m = %.3f D0  std %.3g  min %.4g  max %.4g"
         % (d["mean"], d["mean"] / D0, d["std"], d["min"], d["max"]))
     if b["resolved"]:
@@ -615,11 +687,8 @@ def format_summary(r):
     else:
         add("  breathing    not resolved (resolution %.3g Hz): %s"
             % (b["resolution"], b["note"]))
-    if ref:
-        lo, hi = ref["breathingFrequencySimulation"]
-        add("     ref %-5s drop test about %.2g Hz, seed simulation "
-            "%.2g-%.2g Hz" % (ref["name"], ref["breathingFrequencyDropTest"],
-                              lo, hi))
+    if ref and _reference_breathing(ref):
+        add("     ref %-5s %s" % (ref["name"], _reference_breathing(ref)))
     if cd["weightBalance"] is None:
         add("  drag coeff.  not defined: the payload is not descending")
     else:
@@ -683,12 +752,19 @@ def plot(report, out_dir):
                label="steady interval")
     ax.hlines(v["mean"], s["start"], s["end"], color="C3",
               label="mean %.3g m/s (std %.2g)" % (v["mean"], v["std"]))
-    if ref:
+    if ref and "descentVelocityDropTest" in ref:
         ax.axhline(ref["descentVelocityDropTest"], color="k", ls="--", lw=1,
                    label="drop test %.3g m/s" % ref["descentVelocityDropTest"])
+    if ref and "descentVelocitySimulation" in ref:
         ax.axhline(ref["descentVelocitySimulation"], color="0.4", ls=":",
                    lw=1, label="seed simulation %.2g m/s"
                    % ref["descentVelocitySimulation"])
+    if ref and "descentVelocitySimulationRange" in ref:
+        lo, hi = ref["descentVelocitySimulationRange"]
+        ax.axhspan(lo, hi, color="0.4", alpha=0.12, zorder=0,
+                   label="seed simulation %.2g-%.2g m/s" % (lo, hi)
+                   + (" (%.4g-%.4g kg)" % tuple(ref["payloadRange"])
+                      if "payloadRange" in ref else ""))
     for x in restarts:
         ax.axvline(x, color="0.6", ls=":", lw=0.8)
     ax.set_xlabel("time [s]")

@@ -372,6 +372,50 @@ def test_command_line(tmp, case, expected):
           mean_exact, 1e-6, "m/s")
 
 
+def test_references(tmp, case):
+    """Every published reference: summary and plot work with the values it
+    has (each optional); the tutorials' ones say what the seed states."""
+    keys = {"descentVelocityDropTest", "descentVelocitySimulation",
+            "descentVelocitySimulationRange", "breathingFrequencyDropTest",
+            "breathingFrequencySimulation", "breathingPeriodExperiment",
+            "breathingPeriodSimulation"}
+    for name, ref in sorted(report.REFERENCES.items()):
+        check("reference %s has a title, D0 and a value" % name,
+              "title" in ref and ref.get("nominalDiameter", 0) > 0
+              and bool(keys & set(ref)), "keys %s" % sorted(ref))
+    r = report.analyse(case, reference="T10")
+    summary = report.format_summary(r)
+    check("T10 reference: payload range and periods in the summary",
+          "seed simulation 3-6 m/s for payloads 100-600 kg" in summary
+          and "experiment period 2.3 s (0.435 Hz)" in summary
+          and "seed simulation period about 2 s (0.5 Hz)" in summary
+          and "the reference is for D0 = 10.7 m" in summary,
+          summary.replace("\n", " | "))
+    out = os.path.join(tmp, "out-T10")
+    os.makedirs(out)
+    paths = report.plot(r, out)
+    check("T10 reference: plots", all(os.path.getsize(x) > 0 for x in paths),
+          ", ".join(os.path.basename(x) for x in paths))
+    r = report.analyse(case, reference="G11third")
+    summary = report.format_summary(r)
+    # V = 4 m/s against the seed's 3 m/s: V/ref = 1.333
+    check("G11third reference: terminal velocity without drop test",
+          "seed simulation 3 m/s (V/ref = 1.333)" in summary
+          and "drop test" not in summary,
+          summary.replace("\n", " | "))
+    r = report.analyse(case, reference="C9")
+    summary = report.format_summary(r)
+    check("C9 reference: breathing period only",
+          "seed simulation period about 2 s (0.5 Hz)" in summary
+          and "V/ref" not in summary, summary.replace("\n", " | "))
+    r = report.analyse(case, reference="7ft")
+    summary = report.format_summary(r)
+    check("7ft reference lines unchanged",
+          "drop test 4.27 m/s (V/ref = 0.937), seed simulation 3.9 +- 0.05 "
+          "m/s" in summary and "drop test about 2 Hz, seed simulation "
+          "1.6-2 Hz" in summary, summary.replace("\n", " | "))
+
+
 def main():
     tmp = tempfile.mkdtemp(prefix="canopy-report-")
     try:
@@ -380,6 +424,7 @@ def main():
         test_not_resolved(tmp)
         test_missing_quantities(tmp)
         test_command_line(tmp, case, r)
+        test_references(tmp, case)
     except Exception as e:  # an unexpected error is a failure too
         import traceback
         traceback.print_exc()
