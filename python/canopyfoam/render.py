@@ -4,7 +4,7 @@ canopy.png: the canopy coloured by its pressure jump, lines drawn;
 velocitySlice.png: |U| on a slice through the payload axis, the canopy
 drawn over it.
 
-Run by bin/canopy-render as  xvfb-run -a pvbatch render.py <caseDir> [options];
+Run by bin/canopy-render as  bin/canopy-xrun pvbatch render.py <caseDir> [options];
 also importable from pvpython/pvbatch/the ParaView GUI (needs paraview.simple).
 
 What it opens:
