@@ -372,6 +372,15 @@ def write_report():
         md += ["", "Reproduce: `bin/canopy-validate run %s` then "
                "`bin/canopy-validate report`." % name, ""]
         refs = []
+        done = [r["descentVelocity"]["mean"] for run, r in results
+                if r is not None and run_state(run) == "complete"]
+        if name == "mesh7ft" and len(done) >= 2:
+            spread = (max(done) - min(done)) / np.mean(done)
+            md += ["Terminal velocities of the complete runs: %s m/s, a "
+                   "spread of %.0f %% of their mean: %s." % (
+                       ", ".join("%.2f" % v for v in done), 100 * spread,
+                       "not mesh-converged" if spread > 0.05 else
+                       "within 5 %"), ""]
         if name in ("mesh7ft", "porosity7ft"):
             refs = [(4.27, "drop test 4.27 m/s", "--"),
                     (3.9, "seed simulation 3.9 m/s", ":")]
