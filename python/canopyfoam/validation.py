@@ -15,7 +15,6 @@ plots.
 """
 
 import argparse
-import json
 import math
 import os
 import re
@@ -307,9 +306,7 @@ def plot_study(name, title, runs_results, reference_lines=()):
 def payload_scaling(runs_results):
     """Terminal velocity against total mass with V ∝ sqrt(M) (seed eq. 5.6)
     through the lightest complete run: lines for the markdown."""
-    pts = [(r["parameters"]["totalMass"]["value"][0]
-            if isinstance(r["parameters"]["totalMass"]["value"], list)
-            else r["parameters"]["totalMass"]["value"],
+    pts = [(r["parameters"]["totalMass"]["value"],
             r["descentVelocity"]["mean"], run) for run, r in runs_results
            if r is not None]
     if len(pts) < 2:
