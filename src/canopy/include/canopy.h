@@ -408,6 +408,19 @@ canopy_status canopy_model_set_nodal_forces(canopy_model *model,
  * the structure's equations, a stabiliser for strongly coupled iterations. */
 canopy_status canopy_model_set_added_mass(canopy_model *model,
                                           const double *added_mass, int n);
+/* Lumped added mass acting along one direction per node: node i's inertia
+ * becomes m_i I + added_mass[i] d_i d_i^T, d_i = direction[3i..3i+2]
+ * normalised (3*n doubles); a zero direction makes that node's added mass
+ * act in every direction, as set_added_mass. For a membrane in a fluid
+ * (the air resists motion normal to the cloth, not along it). Replaces the
+ * values of set_added_mass (which in turn clears the directions). Explicit
+ * integrators only: advancing with an implicit one (newmark, hht, kang)
+ * fails with CANOPY_ERR_STATE. The stable sub-step is bounded with the
+ * smallest inertia, m_i alone. */
+canopy_status canopy_model_set_directional_added_mass(canopy_model *model,
+                                                      const double *added_mass,
+                                                      const double *direction,
+                                                      int n);
 
 /* Triangle markers: centroids (3*nt), unit normals (3*nt), areas (nt) and
  * velocities (3*nt, mean of the vertex velocities). Any pointer may be NULL. */

@@ -46,6 +46,7 @@ static canopy_status reserve_nodes(canopy_model *m, int need)
         !grow((void **)&n->v, 3 * sizeof(double), old, cap) ||
         !grow((void **)&n->mass, sizeof(double), old, cap) ||
         !grow((void **)&n->added_mass, sizeof(double), old, cap) ||
+        !grow((void **)&n->added_dir, 3 * sizeof(double), old, cap) ||
         !grow((void **)&n->force_ext, 3 * sizeof(double), old, cap) ||
         !grow((void **)&n->acc, 3 * sizeof(double), old, cap) ||
         !grow((void **)&n->fixed, 1, old, cap) ||
@@ -125,7 +126,8 @@ void canopy_model_destroy(canopy_model **model)
     if (model == NULL || *model == NULL) return;
     canopy_model *m = *model;
     free(m->nodes.x); free(m->nodes.v); free(m->nodes.mass);
-    free(m->nodes.added_mass); free(m->nodes.force_ext); free(m->nodes.acc);
+    free(m->nodes.added_mass); free(m->nodes.added_dir);
+    free(m->nodes.force_ext); free(m->nodes.acc);
     free(m->nodes.fixed); free(m->nodes.group);
     free(m->springs.ends); free(m->springs.rest); free(m->springs.rest_vec);
     free(m->springs.k); free(m->springs.c); free(m->springs.law);
@@ -179,6 +181,7 @@ canopy_status canopy_model_add_node(canopy_model *model, const double x[3],
     memset(n->force_ext + 3 * i, 0, 3 * sizeof(double));
     n->mass[i] = mass;
     n->added_mass[i] = 0.0;
+    memset(n->added_dir + 3 * i, 0, 3 * sizeof(double));
     n->fixed[i] = 0;
     n->group[i] = (unsigned char)group;
     topology_changed(model);
@@ -372,6 +375,11 @@ canopy_status canopy_model_prepare(canopy_model *model)
             return canopy_fail(model, CANOPY_ERR_STATE,
                                "node %d is free but has zero mass", i);
     }
+    if (model->directional_added_mass && model->integrator->implicit)
+        return canopy_fail(model, CANOPY_ERR_STATE,
+                           "a directional added mass (set_directional_added_"
+                           "mass) needs an explicit integrator, not '%s'",
+                           model->integrator->name);
     if (model->work_nodes != n->count) {
         free_work(model);
         size_t bytes = 3 * sizeof(double) * (size_t)n->count;
@@ -632,6 +640,50 @@ canopy_status canopy_model_set_added_mass(canopy_model *model,
                                "set_added_mass: node %d value %g must be "
                                "finite and >= 0", i, added_mass[i]);
     copy_array(model->nodes.added_mass, added_mass, sizeof(double) * (size_t)n);
+    if (n > 0) memset(model->nodes.added_dir, 0, 3 * sizeof(double) * (size_t)n);
+    model->directional_added_mass = 0;
+    model->prepared = 0; /* masses changed: re-validate */
+    canopy_clear_message(model);
+    return CANOPY_OK;
+}
+
+canopy_status canopy_model_set_directional_added_mass(canopy_model *model,
+                                                      const double *added_mass,
+                                                      const double *direction,
+                                                      int n)
+{
+    NULL_MODEL_CHECK(model);
+    canopy_status st = count_check(model, added_mass, n, model->nodes.count,
+                                   "set_directional_added_mass");
+    if (st != CANOPY_OK) return st;
+    if (n > 0 && direction == NULL)
+        return canopy_fail(model, CANOPY_ERR_ARGUMENT,
+                           "set_directional_added_mass: direction is NULL");
+    for (int i = 0; i < n; ++i) {
+        const double *d = direction + 3 * i;
+        if (!(added_mass[i] >= 0.0) || !isfinite(added_mass[i]))
+            return canopy_fail(model, CANOPY_ERR_ARGUMENT,
+                               "set_directional_added_mass: node %d value %g "
+                               "must be finite and >= 0", i, added_mass[i]);
+        if (!isfinite(d[0] + d[1] + d[2]))
+            return canopy_fail(model, CANOPY_ERR_ARGUMENT,
+                               "set_directional_added_mass: node %d direction "
+                               "is not finite", i);
+    }
+    int directional = 0;
+    for (int i = 0; i < n; ++i) {
+        const double *d = direction + 3 * i;
+        const double len = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+        double *u = model->nodes.added_dir + 3 * i;
+        model->nodes.added_mass[i] = added_mass[i];
+        if (len > 0.0 && added_mass[i] > 0.0) {
+            u[0] = d[0] / len; u[1] = d[1] / len; u[2] = d[2] / len;
+            directional = 1;
+        } else {
+            u[0] = u[1] = u[2] = 0.0;
+        }
+    }
+    model->directional_added_mass = directional;
     model->prepared = 0; /* masses changed: re-validate */
     canopy_clear_message(model);
     return CANOPY_OK;
@@ -660,6 +712,7 @@ canopy_status canopy_model_set_integrator(canopy_model *model, const char *name)
                            name ? name : "(null)", list);
     }
     model->integrator = it;
+    model->prepared = 0; /* re-validate (directional added mass) */
     canopy_clear_message(model);
     return CANOPY_OK;
 }

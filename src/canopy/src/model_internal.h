@@ -17,6 +17,8 @@ typedef struct canopy_nodes {
     double *v;          /* 3*count velocities */
     double *mass;       /* lumped mass */
     double *added_mass; /* optional added mass (0 by default) */
+    double *added_dir;  /* 3*count unit direction the added mass acts along
+                           (0 0 0: it acts in every direction) */
     double *force_ext;  /* 3*count extra nodal forces */
     double *acc;        /* 3*count acceleration carried by HHT between steps */
     unsigned char *fixed;
@@ -76,6 +78,7 @@ struct canopy_model {
     size_t work_bytes;
 
     int prepared;               /* topology validated and work allocated */
+    int directional_added_mass; /* some node's added mass has a direction */
     char message[CANOPY_MESSAGE_SIZE];
 };
 
@@ -116,10 +119,19 @@ void canopy_tangent_stiffness(const canopy_model *model, const double *x,
 /* y = C u (dashpot tangent at x). */
 void canopy_tangent_damping(const canopy_model *model, const double *x,
                             const double *u, double *y);
-/* Effective mass of node i (mass + added mass). */
+/* Does node i's added mass act along one direction only? */
+static inline int canopy_added_mass_directional(const canopy_model *m, int i)
+{
+    const double *d = m->nodes.added_dir + 3 * i;
+    return d[0] != 0.0 || d[1] != 0.0 || d[2] != 0.0;
+}
+
+/* Effective mass of node i: mass + added mass, or for a directional added
+ * mass the smallest inertia, the mass alone (what bounds the stable step). */
 static inline double canopy_effective_mass(const canopy_model *m, int i)
 {
-    return m->nodes.mass[i] + m->nodes.added_mass[i];
+    return m->nodes.mass[i]
+         + (canopy_added_mass_directional(m, i) ? 0.0 : m->nodes.added_mass[i]);
 }
 
 /* State copies. */

@@ -54,3 +54,9 @@ Foam::scalar Foam::aitkenRelaxation::relax
 
     return r.size() ? max(mag(r)) : 0;
 }
+
+
+Foam::string Foam::aitkenRelaxation::describe() const
+{
+    return "relaxation " + Foam::name(omega_);
+}

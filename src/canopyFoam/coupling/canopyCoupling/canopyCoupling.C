@@ -293,7 +293,7 @@ Foam::canopyCoupling::canopyCoupling
     pressureOffset_(3),
     tolerance_(1e-3),
     Uref_(1),
-    aitken_(0.5),
+    acceleration_(),
     markerForceTotal_(),
     markerForceStart_(),
     force_
@@ -318,6 +318,8 @@ Foam::canopyCoupling::canopyCoupling
     pressureForce_(Zero),
     slip_(0),
     stopIfNotConverged_(true),
+    restartFluid_(false),
+    ibForceLoad_(false),
     nominalDiameter_(0),
     followPayload_(false),
     wind_(Zero),
@@ -359,9 +361,40 @@ Foam::canopyCoupling::canopyCoupling
     pressureOffset_ = dict.getOrDefault<scalar>("pressureOffset", 3);
     tolerance_ = dict.getOrDefault<scalar>("tolerance", 1e-3);
     Uref_ = dict.getOrDefault<scalar>("Uref", 1);
-    const scalar omega0 = dict.getOrDefault<scalar>("initialRelaxation", 0.5);
-    const scalar omegaMax = dict.getOrDefault<scalar>("maxRelaxation", 1);
     stopIfNotConverged_ = dict.getOrDefault<bool>("stopIfNotConverged", true);
+    restartFluid_ = dict.getOrDefault<bool>("restartFluid", false);
+    const word load(dict.getOrDefault<word>("pressureJump", "sampled"));
+    if (load != "sampled" && load != "ibForce")
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'coupling.pressureJump' = " << load
+            << " is not valid; valid: sampled ibForce" << exit(FatalIOError);
+    }
+    ibForceLoad_ = load == "ibForce";
+    const scalar addedMassDensity = dict.getOrDefault<scalar>("addedMass", 0);
+    if (!(addedMassDensity >= 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'coupling.addedMass' = " << addedMassDensity
+            << " must be >= 0 [kg/m^2]" << exit(FatalIOError);
+    }
+    if (addedMassDensity > 0)
+    {
+        // A third of each canopy triangle's area to each of its nodes
+        addedMass_.setSize(structure_.nNodes(), Zero);
+        const triFaceList tris(structure_.triangles());
+        const scalarField areas(structure_.triangleAreas());
+        forAll(tris, t)
+        {
+            for (const label node : tris[t])
+            {
+                addedMass_[node] += addedMassDensity*areas[t]/3;
+            }
+        }
+        meanAcceleration_.setSize(structure_.nNodes(), Zero);
+        addedMassDirection_.setSize(structure_.nNodes(), Zero);
+        stepStartVelocity_ = structure_.velocities();
+    }
 
     const word tangential(dict.getOrDefault<word>("tangential", "noSlip"));
     if (tangential != "noSlip" && tangential != "free")
@@ -378,8 +411,6 @@ Foam::canopyCoupling::canopyCoupling
         {"pressureOffset", pressureOffset_, 0},
         {"tolerance", tolerance_, 0},
         {"Uref", Uref_, 0},
-        {"initialRelaxation", omega0, 0},
-        {"maxRelaxation", omegaMax, 0},
     };
     for (const auto& p : positive)
     {
@@ -396,14 +427,7 @@ Foam::canopyCoupling::canopyCoupling
             << "Entry 'coupling.forcingIterations' = " << forcingIterations_
             << " must be >= 1" << exit(FatalIOError);
     }
-    if (omegaMax > 1 || omegaMax < omega0)
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'coupling.maxRelaxation' = " << omegaMax
-            << " must lie in [initialRelaxation, 1] = [" << omega0 << ", 1]"
-            << exit(FatalIOError);
-    }
-    aitken_ = aitkenRelaxation(omega0, min(0.05, omega0), omegaMax);
+    acceleration_ = interfaceAcceleration::New(dict);
     readFrame(dict);
 
     kernel_ = deltaKernel::New(dict.getOrDefault<word>("kernel", "roma3"));
@@ -524,8 +548,36 @@ void Foam::canopyCoupling::beginTimeStep()
 {
     failure_.clear();
     structure_.checkpoint();
+    if (addedMass_.size())
+    {
+        stepStartVelocity_ = structure_.velocities();
+
+        // The air resists the cloth's motion along its normal: the added
+        // mass acts along the nodes' normals at the step's start
+        // (area-weighted over the adjacent triangles)
+        addedMassDirection_ = Zero;
+        const triFaceList tris(structure_.triangles());
+        const vectorField n(structure_.triangleNormals());
+        const scalarField areas(structure_.triangleAreas());
+        forAll(tris, t)
+        {
+            for (const label node : tris[t])
+            {
+                addedMassDirection_[node] += areas[t]*n[t];
+            }
+        }
+        forAll(addedMassDirection_, node)
+        {
+            const scalar len = mag(addedMassDirection_[node]);
+            if (len > VSMALL)
+            {
+                addedMassDirection_[node] /= len;
+            }
+        }
+        structure_.setDirectionalAddedMass(addedMass_, addedMassDirection_);
+    }
     markerForceStart_ = markerForceTotal_;
-    aitken_.reset();
+    acceleration_->reset();
     iteration_ = 0;
     structureSolves_ = 0;
     converged_ = false;
@@ -613,6 +665,18 @@ const Foam::surfaceScalarField& Foam::canopyCoupling::faceForce() const
                 ) & mesh_.Sf()
             )
         );
+
+        // The air entering through the inlet patches already moves at
+        // wind - V (set for the step by beginTimeStep): the fictitious
+        // force must not add a flux there, else the zero-gradient pressure
+        // there lets it in twice and a spurious pressure gradient -A
+        // builds up across the box (which the pressure sampling at
+        // x +- delta n would read as a jump of rho A 2 delta)
+        surfaceScalarField::Boundary& bf = faceForce_->boundaryFieldRef();
+        for (const label patchi : inletPatches_)
+        {
+            bf[patchi] = 0;
+        }
     }
     return faceForce_();
 }
@@ -671,6 +735,13 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
 
     // Pressure jump dp = rho (p- - p+) per marker, then per triangle
     scalarField dpMarker;
+    if (ibForceLoad_)
+    {
+        // Newton's third law: the air pushes the canopy with minus the
+        // force the markers put on it; its normal part per area is the jump
+        dpMarker = -rho_*(markerForceTotal_ & mk.normals())/mk.areas();
+    }
+    else
     {
         sectionTimer timer(ibSeconds_);
         const scalarField pPlus(plusStencil_->interpolate(p));
@@ -686,8 +757,28 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
         sectionTimer timer(structureSeconds_);
         structure_.restore();
         structure_.setPressureJump(mk.triangleAverage(dpMarker));
+        if (addedMass_.size())
+        {
+            // Added-mass stabiliser along the normal d:
+            // (m + m_a d d^T) a = F + m_a (d.abar) d, abar the
+            // mean acceleration of the last solve; at convergence abar is
+            // this step's own mean acceleration and the extra terms cancel
+            // on average over the step
+            structure_.setNodalForces
+            (
+                addedMass_
+               *(addedMassDirection_ & meanAcceleration_)
+               *addedMassDirection_
+            );
+        }
         advanced =
             structure_.tryAdvance(mesh_.time().deltaTValue(), substeps, message);
+        if (advanced && addedMass_.size())
+        {
+            meanAcceleration_ =
+                (structure_.velocities() - stepStartVelocity_)
+               /mesh_.time().deltaTValue();
+        }
     }
     if (!advanced)
     {
@@ -707,9 +798,23 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
 
     const scalar scale = max(Uref_, nt ? max(mag(target)) : 0);
     bool stop = false;
+    // Where the interface velocity changes most (for the log)
+    label worst = -1;
+    {
+        scalar largest = -1;
+        forAll(target, t)
+        {
+            const scalar change = mag(target[t] - normalVelocity_[t]);
+            if (change > largest)
+            {
+                largest = change;
+                worst = t;
+            }
+        }
+    }
     if (scheme_ == scheme::strong)
     {
-        residual_ = aitken_.relax(normalVelocity_, target)/scale;
+        residual_ = acceleration_->relax(normalVelocity_, target)/scale;
         converged_ = residual_ < tolerance_;
         stop = converged_;
     }
@@ -744,9 +849,15 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
     spreadForce();
 
     Info<< "canopyCoupling: iteration " << iteration_
-        << ", interface residual " << residual_
+        << ", interface residual " << residual_;
+    if (worst >= 0)
+    {
+        Info<< " (largest at " << structure_.triangleCentres()()[worst]
+            << ")";
+    }
+    Info
         << ", slip " << slip_
-        << ", relaxation " << aitken_.omega()
+        << ", " << acceleration_->describe().c_str()
         << ", structure sub-steps " << substeps
         << ", pressure force " << pressureForce_
         << ", IB force " << rho_*markerForce_ << endl;

@@ -449,6 +449,29 @@ void Foam::canopyStructure::setAddedMass(const scalarField& addedMass)
 }
 
 
+void Foam::canopyStructure::setDirectionalAddedMass
+(
+    const scalarField& addedMass,
+    const vectorField& direction
+)
+{
+    if (direction.size() != addedMass.size())
+    {
+        FatalErrorInFunction
+            << direction.size() << " directions for " << addedMass.size()
+            << " nodes" << exit(FatalError);
+    }
+    check
+    (
+        canopy_model_set_directional_added_mass
+        (
+            model_.get(), addedMass.cdata(), raw(direction), addedMass.size()
+        ),
+        FUNCTION_NAME, "canopy_model_set_directional_added_mass"
+    );
+}
+
+
 Foam::label Foam::canopyStructure::advance(const scalar dt)
 {
     int nSub = 0;

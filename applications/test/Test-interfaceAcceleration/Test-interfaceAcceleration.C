@@ -1,0 +1,223 @@
+/*---------------------------------------------------------------------------*\
+    canopyFoam: Test-interfaceAcceleration.C — the strong coupling's
+    accelerations (Aitken, IQN-ILS) on linear fixed-point problems.
+-------------------------------------------------------------------------------
+Application
+    Test-interfaceAcceleration
+
+Description
+    A model of the coupling iteration x <- G(x) for a light canopy:
+
+        G(x) = x* + M (x - x*),   M = H diag(lambda) H,
+
+    H a Householder reflection (orthogonal), the eigenvalues lambda spread
+    over [-lambdaMax, 0.5]: the strongly negative ones are the added-mass
+    modes (G overshoots by m_added/m_canopy), which make plain iteration and
+    Aitken's relaxation diverge or crawl. Checks (each prints PASS/FAIL):
+
+    1. IQN-ILS without reuse reaches |x - x*| < 1e-8 |x*| within n + 2
+       evaluations of G (exact least squares on a linear G of dimension n).
+    2. The problem is hard: Aitken's relaxation (bounds [0.05, 1]) has not
+       reached that after 200 evaluations.
+    3. IQN-ILS reusing 8 time steps, over 6 time steps whose fixed points
+       differ (same M): every step after the first converges within 4
+       evaluations, with the filter dropping the surplus columns.
+    4. The same steps without reuse each need more than 4 evaluations (the
+       reuse is what helps).
+
+    Exit status 0 only when every check passes.
+
+    With -select TEXT it only selects an acceleration from TEXT, the body
+    of a coupling dictionary (e.g. "acceleration IQN-ILS; reuse 4;"),
+    prints what it selected and exits: a bad entry stops with the
+    FatalIOError naming it (checked by tests/openfoam/interfaceAcceleration).
+
+Usage
+    Test-interfaceAcceleration [-n N] [-lambdaMax L] [-select TEXT]
+
+\*---------------------------------------------------------------------------*/
+
+#include "argList.H"
+#include "interfaceQuasiNewton.H"
+#include "aitkenRelaxation.H"
+#include "IStringStream.H"
+
+using namespace Foam;
+
+// Apply the reflection H = I - 2 u u^T / (u.u)
+static scalarField reflect(const scalarField& u, const scalarField& v)
+{
+    return v - 2*sum(u*v)/sum(u*u)*u;
+}
+
+
+struct linearProblem
+{
+    scalarField u;          // reflection vector
+    scalarField lambda;     // eigenvalues
+    scalarField xStar;      // fixed point
+
+    scalarField G(const scalarField& x) const
+    {
+        return xStar + reflect(u, lambda*reflect(u, x - xStar));
+    }
+};
+
+
+// Iterate until |x - x*| < tol |x*| or maxEval evaluations; returns the
+// number of evaluations of G (maxEval + 1 when not converged or diverged)
+static label solve
+(
+    interfaceAcceleration& acc,
+    const linearProblem& P,
+    scalarField& x,
+    label maxEval,
+    scalar tol
+)
+{
+    const scalar scale = max(mag(P.xStar));
+    for (label k = 1; k <= maxEval; ++k)
+    {
+        const scalarField target(P.G(x));
+        if (max(mag(x - P.xStar)) < tol*scale)
+        {
+            return k;
+        }
+        acc.relax(x, target);
+        if (max(mag(x)) > 1e30*scale)
+        {
+            // Diverged (stop before the arithmetic overflows)
+            return maxEval + 1;
+        }
+    }
+    return maxEval + 1;
+}
+
+
+int main(int argc, char *argv[])
+{
+    argList::noParallel();
+    argList::noBanner();
+    argList::addOption("n", "N", "dimension of the interface (default 24)");
+    argList::addOption("lambdaMax", "L", "added-mass ratio (default 140)");
+    argList::addOption
+    (
+        "select",
+        "TEXT",
+        "only select an acceleration from a coupling dictionary's body"
+    );
+    argList args(argc, argv, false, false);
+
+    if (args.found("select"))
+    {
+        const dictionary coupling(IStringStream(args.get<string>("select"))());
+        autoPtr<interfaceAcceleration> acc(interfaceAcceleration::New(coupling));
+        Info<< "selected: " << acc->describe().c_str() << endl;
+        return 0;
+    }
+
+    const label n = args.getOrDefault<label>("n", 24);
+    const scalar lambdaMax = args.getOrDefault<scalar>("lambdaMax", 140);
+    const scalar tol = 1e-8;
+
+    linearProblem P;
+    P.u.setSize(n);
+    P.lambda.setSize(n);
+    P.xStar.setSize(n);
+    forAll(P.u, i)
+    {
+        P.u[i] = 1 + 0.5*Foam::sin(1.3*i + 0.2);
+        // -lambdaMax ... 0.5, a few strongly negative modes
+        const scalar s = scalar(i)/max(n - 1, 1);
+        P.lambda[i] = 0.5 - (lambdaMax + 0.5)*Foam::pow(1 - s, 4);
+        P.xStar[i] = Foam::cos(0.7*i) + 0.1*i/n;
+    }
+    Info<< "Linear fixed point of dimension " << n << ", eigenvalues of M in ["
+        << min(P.lambda) << ", " << max(P.lambda) << "]" << nl << endl;
+
+    label failures = 0;
+    auto check = [&](bool ok, const std::string& what)
+    {
+        Info<< (ok ? "PASS " : "FAIL ") << what.c_str() << endl;
+        if (!ok) ++failures;
+    };
+
+    // 1. IQN-ILS without reuse
+    {
+        interfaceQuasiNewton iqn(0.1, 0, 1e-10);
+        scalarField x(n, Zero);
+        const label k = solve(iqn, P, x, 4*n, tol);
+        check
+        (
+            k <= n + 2,
+            "IQN-ILS (no reuse) converged in " + std::to_string(k)
+          + " evaluations (limit n + 2 = " + std::to_string(n + 2) + ")"
+        );
+    }
+
+    // 2. Aitken's relaxation on the same problem
+    {
+        aitkenRelaxation aitken(0.5, 0.05, 1);
+        scalarField x(n, Zero);
+        const label k = solve(aitken, P, x, 200, tol);
+        check
+        (
+            k > 200,
+            "Aitken's relaxation has not converged after 200 evaluations"
+            " (the problem needs more than relaxation): "
+          + std::string(k > 200 ? "not converged" : "converged in "
+          + std::to_string(k))
+        );
+    }
+
+    // 3. and 4. Six time steps with moving fixed points
+    {
+        interfaceQuasiNewton reused(0.1, 8, 1e-3);
+        interfaceQuasiNewton fresh(0.1, 0, 1e-3);
+        scalarField xr(n, Zero), xf(n, Zero);
+        label worstReused = 0, bestFresh = labelMax, dropped = 0;
+        bool allConverged = true;
+        for (label step = 0; step < 6; ++step)
+        {
+            linearProblem Ps(P);
+            forAll(Ps.xStar, i)
+            {
+                Ps.xStar[i] += 0.3*step*Foam::sin(0.5*i + step);
+            }
+            reused.reset();
+            fresh.reset();
+            const label kr = solve(reused, Ps, xr, 4*n, tol);
+            const label kf = solve(fresh, Ps, xf, 4*n, tol);
+            Info<< "  step " << step << ": evaluations with reuse " << kr
+                << " (" << reused.describe().c_str() << "), without " << kf
+                << endl;
+            allConverged = allConverged && kr <= 4*n && kf <= 4*n;
+            if (step > 0)
+            {
+                worstReused = max(worstReused, kr);
+                bestFresh = min(bestFresh, kf);
+            }
+            dropped = max(dropped, reused.columnsDropped());
+        }
+        check
+        (
+            allConverged && worstReused <= 4,
+            "IQN-ILS reusing 8 steps: every step after the first converged"
+            " within " + std::to_string(worstReused) + " evaluations (limit 4)"
+            ", largest number of filtered columns " + std::to_string(dropped)
+        );
+        check
+        (
+            bestFresh > 4,
+            "IQN-ILS without reuse needs at least " + std::to_string(bestFresh)
+          + " evaluations per step (more than 4)"
+        );
+    }
+
+    Info<< nl << (failures ? "FAILED: " : "PASSED: ") << failures
+        << " of 4 checks failed" << endl;
+    return failures ? 1 : 0;
+}
+
+
+// ************************************************************************* //

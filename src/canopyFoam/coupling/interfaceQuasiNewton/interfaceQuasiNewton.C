@@ -1,0 +1,204 @@
+/*---------------------------------------------------------------------------*\
+    canopyFoam: interfaceQuasiNewton.C — IQN-ILS acceleration of the strong
+    coupling (Degroote, Bathe & Vierendeels 2009).
+\*---------------------------------------------------------------------------*/
+
+#include "interfaceQuasiNewton.H"
+#include "UPtrList.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::scalarField Foam::interfaceQuasiNewton::leastSquares
+(
+    const UPtrList<const scalarField>& V,
+    const scalarField& r,
+    boolList& keep
+)
+{
+    // Modified Gram-Schmidt, column by column (newest first): Q R = V with
+    // the filtered columns left out
+    const label nc = V.size();
+    keep.setSize(nc);
+    keep = false;
+    List<scalarField> Q;
+    Q.setSize(nc);
+    List<scalarField> R(nc, scalarField(nc, Zero));   // R[i][j], i <= j
+    labelList accepted;
+    accepted.setSize(0);
+    label nq = 0;
+
+    for (label j = 0; j < nc; ++j)
+    {
+        scalarField v(V[j]);
+        const scalar length = Foam::sqrt(sum(v*v));
+        scalarField proj(nq, Zero);
+        for (label i = 0; i < nq; ++i)
+        {
+            proj[i] = sum(Q[i]*v);
+            v -= proj[i]*Q[i];
+        }
+        const scalar rest = Foam::sqrt(sum(v*v));
+        if (!(length > 0) || rest <= filter_*length)
+        {
+            continue;
+        }
+        for (label i = 0; i < nq; ++i)
+        {
+            R[i][nq] = proj[i];
+        }
+        R[nq][nq] = rest;
+        Q[nq] = v/rest;
+        accepted.append(j);
+        keep[j] = true;
+        ++nq;
+    }
+
+    // R c = Q^T (-r) by back substitution
+    scalarField b(nq);
+    for (label i = 0; i < nq; ++i)
+    {
+        b[i] = -sum(Q[i]*r);
+    }
+    scalarField cq(nq, Zero);
+    for (label i = nq - 1; i >= 0; --i)
+    {
+        scalar s = b[i];
+        for (label k = i + 1; k < nq; ++k)
+        {
+            s -= R[i][k]*cq[k];
+        }
+        cq[i] = s/R[i][i];
+    }
+
+    scalarField c(nc, Zero);
+    forAll(accepted, i)
+    {
+        c[accepted[i]] = cq[i];
+    }
+    columnsUsed_ = nq;
+    columnsDropped_ = nc - nq;
+    return c;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::interfaceQuasiNewton::interfaceQuasiNewton
+(
+    scalar omega0,
+    label reuse,
+    scalar filter
+)
+:
+    omega0_(omega0),
+    reuse_(reuse),
+    filter_(filter),
+    V_(),
+    W_(),
+    pastV_(),
+    pastW_(),
+    previousResidual_(),
+    previousOutput_(),
+    columnsUsed_(0),
+    columnsDropped_(0)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::interfaceQuasiNewton::reset()
+{
+    if (reuse_ > 0 && V_.size())
+    {
+        pastV_.append(List<scalarField>(V_));
+        pastW_.append(List<scalarField>(W_));
+    }
+    while (pastV_.size() > reuse_)
+    {
+        // Forget the oldest time step
+        for (label s = 1; s < pastV_.size(); ++s)
+        {
+            pastV_[s - 1].transfer(pastV_[s]);
+            pastW_[s - 1].transfer(pastW_[s]);
+        }
+        pastV_.setSize(pastV_.size() - 1);
+        pastW_.setSize(pastW_.size() - 1);
+    }
+    V_.clear();
+    W_.clear();
+    previousResidual_.clear();
+    previousOutput_.clear();
+}
+
+
+Foam::scalar Foam::interfaceQuasiNewton::relax
+(
+    scalarField& x,
+    const scalarField& target
+)
+{
+    const scalarField r(target - x);
+
+    if (previousResidual_.size() == r.size())
+    {
+        V_.append(scalarField(r - previousResidual_));
+        W_.append(scalarField(target - previousOutput_));
+    }
+    previousResidual_ = r;
+    previousOutput_ = target;
+
+    // Columns newest first: this step's, then the past steps'
+    UPtrList<const scalarField> V, W;
+    for (label j = V_.size() - 1; j >= 0; --j)
+    {
+        V.append(&V_[j]);
+        W.append(&W_[j]);
+    }
+    for (label s = pastV_.size() - 1; s >= 0; --s)
+    {
+        for (label j = pastV_[s].size() - 1; j >= 0; --j)
+        {
+            if (pastV_[s][j].size() == r.size())
+            {
+                V.append(&pastV_[s][j]);
+                W.append(&pastW_[s][j]);
+            }
+        }
+    }
+
+    const scalar residual = r.size() ? max(mag(r)) : 0;
+    if (V.empty())
+    {
+        x += omega0_*r;
+        columnsUsed_ = 0;
+        columnsDropped_ = 0;
+        return residual;
+    }
+
+    boolList keep;
+    const scalarField c(leastSquares(V, r, keep));
+    x = target;
+    forAll(W, j)
+    {
+        if (keep[j])
+        {
+            x += c[j]*W[j];
+        }
+    }
+    return residual;
+}
+
+
+Foam::string Foam::interfaceQuasiNewton::describe() const
+{
+    if (columnsUsed_ == 0)
+    {
+        return "relaxation " + Foam::name(omega0_);
+    }
+    return
+        "quasi-Newton columns " + Foam::name(columnsUsed_)
+      + " (" + Foam::name(columnsDropped_) + " filtered)";
+}
+
+
+// ************************************************************************* //
