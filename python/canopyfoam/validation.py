@@ -176,6 +176,8 @@ def execute(run, ranks):
     wall = time.time() - start
     with open(os.path.join(run.case_dir, "validation-wall-time"), "w") as f:
         f.write("%.1f %d\n" % (wall, ranks))
+    with open(os.path.join(run.case_dir, "validation-code-version"), "w") as f:
+        f.write(code_version() + "\n")
     print("canopy-validate: %s %s after %.0f s" % (
         run.ident, "done" if status == 0 else "FAILED (status %d)" % status,
         wall), flush=True)
@@ -210,6 +212,23 @@ def wall_time(case_dir):
         return float(wall), int(ranks)
     except (OSError, ValueError):
         return None, None
+
+
+def code_version():
+    """git describe of the working tree (with -dirty), or 'unknown'."""
+    out = subprocess.run(["git", "-C", TOP, "describe", "--always",
+                          "--dirty"], capture_output=True, text=True)
+    return out.stdout.strip() if out.returncode == 0 else "unknown"
+
+
+def run_code_version(case_dir):
+    """The code version a run was made with ('unrecorded' for runs made
+    before versions were recorded)."""
+    try:
+        with open(os.path.join(case_dir, "validation-code-version")) as f:
+            return f.read().strip() or "unrecorded"
+    except OSError:
+        return "unrecorded"
 
 
 def cell_count(case_dir):
@@ -366,8 +385,18 @@ def write_report():
             r, state = result(run)
             results.append((run, r))
             md.append(run_row(run, r, state))
+        made = [(run.ident, run_code_version(run.case_dir))
+                for run, r in results if r is not None]
         md += ["", "Reproduce: `bin/canopy-validate run %s` then "
                "`bin/canopy-validate report`." % name, ""]
+        if made:
+            current = code_version()
+            md += ["Code version of each run (`git describe` when it ran; "
+                   "this report: %s): %s.%s" % (
+                       current, ", ".join("%s %s" % m for m in made),
+                       "" if all(v == current for _, v in made) else
+                       " Runs made with another version may not match the "
+                       "current code: re-run them."), ""]
         refs = []
         done = [r["descentVelocity"]["mean"] for run, r in results
                 if r is not None and run_state(run) == "complete"]
