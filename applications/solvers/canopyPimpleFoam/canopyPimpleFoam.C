@@ -103,9 +103,6 @@ int main(int argc, char *argv[])
 
         coupling.beginTimeStep(U);
 
-        // The fluid at the step's start, for coupling.restartFluid
-        #include "storeStepStart.H"
-
         // --- Pressure-velocity PIMPLE corrector loop with the coupling
         while (pimple.loop())
         {

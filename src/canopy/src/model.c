@@ -627,24 +627,50 @@ canopy_status canopy_model_get_pressure_jump(const canopy_model *model,
     return CANOPY_OK;
 }
 
+/* Added mass per node, acting along direction[3i..3i+2] (normalised) or,
+ * where that is zero or direction is NULL, in every direction. */
+static canopy_status store_added_mass(canopy_model *model,
+                                      const double *added_mass,
+                                      const double *direction, int n,
+                                      const char *who)
+{
+    canopy_status st = count_check(model, added_mass, n, model->nodes.count,
+                                   who);
+    if (st != CANOPY_OK) return st;
+    for (int i = 0; i < n; ++i) {
+        if (!(added_mass[i] >= 0.0) || !isfinite(added_mass[i]))
+            return canopy_fail(model, CANOPY_ERR_ARGUMENT,
+                               "%s: node %d value %g must be finite and >= 0",
+                               who, i, added_mass[i]);
+        if (direction && !isfinite(direction[3 * i] + direction[3 * i + 1] +
+                                   direction[3 * i + 2]))
+            return canopy_fail(model, CANOPY_ERR_ARGUMENT,
+                               "%s: node %d direction is not finite", who, i);
+    }
+    int directional = 0;
+    for (int i = 0; i < n; ++i) {
+        double *u = model->nodes.added_dir + 3 * i;
+        u[0] = u[1] = u[2] = 0.0;
+        model->nodes.added_mass[i] = added_mass[i];
+        if (direction == NULL || !(added_mass[i] > 0.0)) continue;
+        const double *d = direction + 3 * i;
+        const double len = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+        if (len > 0.0) {
+            u[0] = d[0] / len; u[1] = d[1] / len; u[2] = d[2] / len;
+            directional = 1;
+        }
+    }
+    model->directional_added_mass = directional;
+    model->prepared = 0; /* masses changed: re-validate */
+    canopy_clear_message(model);
+    return CANOPY_OK;
+}
+
 canopy_status canopy_model_set_added_mass(canopy_model *model,
                                           const double *added_mass, int n)
 {
     NULL_MODEL_CHECK(model);
-    canopy_status st = count_check(model, added_mass, n, model->nodes.count,
-                                   "set_added_mass");
-    if (st != CANOPY_OK) return st;
-    for (int i = 0; i < n; ++i)
-        if (!(added_mass[i] >= 0.0) || !isfinite(added_mass[i]))
-            return canopy_fail(model, CANOPY_ERR_ARGUMENT,
-                               "set_added_mass: node %d value %g must be "
-                               "finite and >= 0", i, added_mass[i]);
-    copy_array(model->nodes.added_mass, added_mass, sizeof(double) * (size_t)n);
-    if (n > 0) memset(model->nodes.added_dir, 0, 3 * sizeof(double) * (size_t)n);
-    model->directional_added_mass = 0;
-    model->prepared = 0; /* masses changed: re-validate */
-    canopy_clear_message(model);
-    return CANOPY_OK;
+    return store_added_mass(model, added_mass, NULL, n, "set_added_mass");
 }
 
 canopy_status canopy_model_set_directional_added_mass(canopy_model *model,
@@ -653,40 +679,11 @@ canopy_status canopy_model_set_directional_added_mass(canopy_model *model,
                                                       int n)
 {
     NULL_MODEL_CHECK(model);
-    canopy_status st = count_check(model, added_mass, n, model->nodes.count,
-                                   "set_directional_added_mass");
-    if (st != CANOPY_OK) return st;
     if (n > 0 && direction == NULL)
         return canopy_fail(model, CANOPY_ERR_ARGUMENT,
                            "set_directional_added_mass: direction is NULL");
-    for (int i = 0; i < n; ++i) {
-        const double *d = direction + 3 * i;
-        if (!(added_mass[i] >= 0.0) || !isfinite(added_mass[i]))
-            return canopy_fail(model, CANOPY_ERR_ARGUMENT,
-                               "set_directional_added_mass: node %d value %g "
-                               "must be finite and >= 0", i, added_mass[i]);
-        if (!isfinite(d[0] + d[1] + d[2]))
-            return canopy_fail(model, CANOPY_ERR_ARGUMENT,
-                               "set_directional_added_mass: node %d direction "
-                               "is not finite", i);
-    }
-    int directional = 0;
-    for (int i = 0; i < n; ++i) {
-        const double *d = direction + 3 * i;
-        const double len = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-        double *u = model->nodes.added_dir + 3 * i;
-        model->nodes.added_mass[i] = added_mass[i];
-        if (len > 0.0 && added_mass[i] > 0.0) {
-            u[0] = d[0] / len; u[1] = d[1] / len; u[2] = d[2] / len;
-            directional = 1;
-        } else {
-            u[0] = u[1] = u[2] = 0.0;
-        }
-    }
-    model->directional_added_mass = directional;
-    model->prepared = 0; /* masses changed: re-validate */
-    canopy_clear_message(model);
-    return CANOPY_OK;
+    return store_added_mass(model, added_mass, direction, n,
+                            "set_directional_added_mass");
 }
 
 /* --- integration controls ------------------------------------------------ */
