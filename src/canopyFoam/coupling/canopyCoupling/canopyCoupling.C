@@ -7,6 +7,57 @@
 #include "extrapolatedCalculatedFvPatchFields.H"
 #include "surfaceInterpolate.H"
 #include "canopy.h"
+#include "Switch.H"
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+// A switch entry coupling.<key> (true/false, on/off, yes/no); anything else
+// stops naming the entry
+bool readSwitch
+(
+    const Foam::dictionary& dict,
+    const Foam::word& key,
+    const bool deflt
+)
+{
+    using namespace Foam;
+    if (!dict.found(key))
+    {
+        return deflt;
+    }
+    ITstream& is = dict.lookup(key);
+    if (is.size() == 1)
+    {
+        const token& tok = is[0];
+        if (tok.isBool())
+        {
+            return tok.boolToken();
+        }
+        if (tok.isWord())
+        {
+            const Switch sw(tok.wordToken(), true);
+            if (sw.valid())
+            {
+                return bool(sw);
+            }
+        }
+    }
+    OStringStream value;
+    forAll(is, i)
+    {
+        value << (i ? " " : "") << is[i];
+    }
+    FatalIOErrorInFunction(dict)
+        << "Entry 'coupling." << key << "' = " << value.str().c_str()
+        << " must be a switch (true/false, on/off, yes/no)"
+        << exit(FatalIOError);
+    return deflt;
+}
+
+} // End anonymous namespace
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -72,6 +123,10 @@ void Foam::canopyCoupling::spreadForce()
     sectionTimer timer(ibSeconds_);
     vectorField f(mesh_.nCells(), Zero);
     velocityStencil_->spread(markerForceTotal_, f);
+    if (lineDrag_.valid())
+    {
+        lineDrag_->spreadReaction(f, rho_);
+    }
     force_.primitiveFieldRef() = f;
     force_.correctBoundaryConditions();
     faceForce_.clear();
@@ -108,6 +163,22 @@ void Foam::canopyCoupling::readCouplingState()
             << " since it was written?)" << exit(FatalIOError);
     }
     markerForceTotal_ = F;
+    if (lineDrag_.valid())
+    {
+        const vectorField L
+        (
+            state.getOrDefault<vectorField>("lineDragForce", vectorField())
+        );
+        if (L.size() != lineDrag_->size())
+        {
+            FatalIOErrorInFunction(state)
+                << "Entry 'lineDragForce' holds " << L.size() << " forces,"
+                << " but the lines have " << lineDrag_->size() << " sample"
+                << " points (was coupling.lineDrag added or changed since it"
+                << " was written?)" << exit(FatalIOError);
+        }
+        lineDrag_->setForces(L);
+    }
     if (followPayload_)
     {
         frameOrigin_ = state.get<vector>("frameOrigin");
@@ -134,6 +205,10 @@ void Foam::canopyCoupling::writeCouplingState() const
     state.add("markerForce", markerForceTotal_);
     state.add("frameOrigin", frameOrigin_);
     state.add("frameVelocity", frameVelocity_);
+    if (lineDrag_.valid())
+    {
+        state.add("lineDragForce", lineDrag_->forces());
+    }
 
     // ASCII (a dictionary cannot hold binary fields) with every digit, so
     // that a restart continues exactly
@@ -251,7 +326,8 @@ void Foam::canopyCoupling::writeSeries()
             << "# time payload_x payload_y payload_z payload_Ux payload_Uy"
             << " payload_Uz force_x force_y force_z projected_diameter"
             << " canopy_area kinetic spring gravity coupling_iterations"
-            << " residual slip substeps frame_x frame_y frame_z" << nl;
+            << " residual slip substeps frame_x frame_y frame_z"
+            << " line_drag_x line_drag_y line_drag_z" << nl;
     }
     const point x
     (
@@ -264,6 +340,10 @@ void Foam::canopyCoupling::writeSeries()
     const scalar diameter = structure_.projectedDiameter();
     const scalar area = structure_.canopyArea();
     const canopyStructure::energy e(structure_.energies());
+    const vector lineDragForce
+    (
+        lineDrag_.valid() ? lineDrag_->total() : vector::zero
+    );
     series_()
         << runTime.value() << ' ' << x.x() << ' ' << x.y() << ' ' << x.z()
         << ' ' << v.x() << ' ' << v.y() << ' ' << v.z()
@@ -272,7 +352,9 @@ void Foam::canopyCoupling::writeSeries()
         << ' ' << e.kinetic << ' ' << e.spring << ' ' << e.gravity
         << ' ' << iteration_ << ' ' << residual_ << ' ' << slip_
         << ' ' << subSteps_ << ' ' << frameOrigin_.x() << ' '
-        << frameOrigin_.y() << ' ' << frameOrigin_.z() << endl;
+        << frameOrigin_.y() << ' ' << frameOrigin_.z()
+        << ' ' << lineDragForce.x() << ' ' << lineDragForce.y() << ' '
+        << lineDragForce.z() << endl;
 }
 
 
@@ -294,6 +376,8 @@ Foam::canopyCoupling::canopyCoupling
     tolerance_(1e-3),
     Uref_(1),
     acceleration_(),
+    lineDrag_(),
+    UName_("U"),
     markerForceTotal_(),
     markerForceStart_(),
     force_
@@ -361,8 +445,8 @@ Foam::canopyCoupling::canopyCoupling
     pressureOffset_ = dict.getOrDefault<scalar>("pressureOffset", 3);
     tolerance_ = dict.getOrDefault<scalar>("tolerance", 1e-3);
     Uref_ = dict.getOrDefault<scalar>("Uref", 1);
-    stopIfNotConverged_ = dict.getOrDefault<bool>("stopIfNotConverged", true);
-    restartFluid_ = dict.getOrDefault<bool>("restartFluid", false);
+    stopIfNotConverged_ = readSwitch(dict, "stopIfNotConverged", true);
+    restartFluid_ = readSwitch(dict, "restartFluid", false);
     const word load(dict.getOrDefault<word>("pressureJump", "sampled"));
     if (load != "sampled" && load != "ibForce")
     {
@@ -465,6 +549,18 @@ Foam::canopyCoupling::canopyCoupling
     velocityStencil_.reset(new ibStencil(mesh, kernel_()));
     plusStencil_.reset(new ibStencil(mesh, kernel_()));
     minusStencil_.reset(new ibStencil(mesh, kernel_()));
+    UName_ = dict.getOrDefault<word>("U", "U");
+    if (dict.found("lineDrag"))
+    {
+        lineDrag_.reset
+        (
+            new lineDrag
+            (
+                dict.subDict("lineDrag"), mesh, kernel_(),
+                structure_.model(), spacing
+            )
+        );
+    }
 
     // The IB force is carried by the markers; a restart reads it and the
     // frame
@@ -475,6 +571,10 @@ Foam::canopyCoupling::canopyCoupling
     }
     frameVelocityStart_ = frameVelocity_;
     placeMarkers();
+    if (lineDrag_.valid())
+    {
+        lineDrag_->place(structure_.model(), frameOrigin_);
+    }
 
     // Interface velocity from the structure's initial state
     const label nt = structure_.nTriangles();
@@ -510,6 +610,11 @@ Foam::canopyCoupling::canopyCoupling
         << dict.getOrDefault<word>("kernel", "roma3")
         << ", " << forcingIterations_ << " forcing iterations, "
         << tangential;
+    if (lineDrag_.valid())
+    {
+        Info<< ", line drag at " << lineDrag_->size() << " points ("
+            << lineDrag_->nOutside() << " outside the mesh)";
+    }
     if (followPayload_)
     {
         Info<< ", the mesh follows the payload (inlet patches "
@@ -757,19 +862,33 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
         sectionTimer timer(structureSeconds_);
         structure_.restore();
         structure_.setPressureJump(mk.triangleAverage(dpMarker));
-        if (addedMass_.size())
+        if (addedMass_.size() || lineDrag_.valid())
         {
-            // Added-mass stabiliser along the normal d:
-            // (m + m_a d d^T) a = F + m_a (d.abar) d, abar the
-            // mean acceleration of the last solve; at convergence abar is
-            // this step's own mean acceleration and the extra terms cancel
-            // on average over the step
-            structure_.setNodalForces
-            (
-                addedMass_
-               *(addedMassDirection_ & meanAcceleration_)
-               *addedMassDirection_
-            );
+            vectorField nodal(structure_.nNodes(), Zero);
+            if (addedMass_.size())
+            {
+                // Added-mass stabiliser along the normal d:
+                // (m + m_a d d^T) a = F + m_a (d.abar) d, abar the
+                // mean acceleration of the last solve; at convergence abar
+                // is this step's own mean acceleration and the extra terms
+                // cancel on average over the step
+                nodal =
+                    addedMass_
+                   *(addedMassDirection_ & meanAcceleration_)
+                   *addedMassDirection_;
+            }
+            if (lineDrag_.valid())
+            {
+                // From the air's current velocity and the lines at the
+                // step's start (the sample points were placed there)
+                lineDrag_->compute
+                (
+                    mesh_.lookupObject<volVectorField>(UName_),
+                    structure_.model(), frameVelocity_, rho_
+                );
+                lineDrag_->addNodalForces(nodal);
+            }
+            structure_.setNodalForces(nodal);
         }
         advanced =
             structure_.tryAdvance(mesh_.time().deltaTValue(), substeps, message);
@@ -860,7 +979,12 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
         << ", " << acceleration_->describe().c_str()
         << ", structure sub-steps " << substeps
         << ", pressure force " << pressureForce_
-        << ", IB force " << rho_*markerForce_ << endl;
+        << ", IB force " << rho_*markerForce_;
+    if (lineDrag_.valid())
+    {
+        Info<< ", line drag " << lineDrag_->total();
+    }
+    Info<< endl;
 
     return stop;
 }
@@ -917,6 +1041,17 @@ bool Foam::canopyCoupling::endTimeStep()
     {
         sectionTimer timer(structureSeconds_);
         structure_.commit();
+    }
+    if (lineDrag_.valid())
+    {
+        // The reaction acts from where the lines are now (and where the
+        // next step's drag is computed): a restart, which knows only this
+        // state, places it the same way
+        {
+            sectionTimer timer(ibSeconds_);
+            lineDrag_->place(structure_.model(), frameOrigin_);
+        }
+        spreadForce();
     }
 
     // The next step starts from the committed structure's interface
