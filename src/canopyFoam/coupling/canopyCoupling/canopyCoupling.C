@@ -285,7 +285,14 @@ Foam::canopyCoupling::interfaceVelocities() const
 
 void Foam::canopyCoupling::placeMarkers()
 {
-    markers_->update(structure_.model(), frameOrigin_);
+    // The frame moves on with V while the structure advances through the
+    // step: a trial structure state at t + dt is seen from the frame's
+    // origin at t + dt, frameOrigin_ + V dt (frameOrigin_ itself moves at
+    // the end of the step)
+    const vector origin =
+        frameOrigin_
+      + frameVelocity_*(structure_.time() - frameOriginTime_);
+    markers_->update(structure_.model(), origin);
 }
 
 
@@ -409,6 +416,7 @@ Foam::canopyCoupling::canopyCoupling
     wind_(Zero),
     inletPatches_(),
     frameOrigin_(Zero),
+    frameOriginTime_(0),
     frameVelocity_(Zero),
     frameAcceleration_(Zero),
     frameVelocityStart_(Zero),
@@ -570,6 +578,7 @@ Foam::canopyCoupling::canopyCoupling
         readCouplingState();
     }
     frameVelocityStart_ = frameVelocity_;
+    frameOriginTime_ = structure_.time();
     placeMarkers();
     if (lineDrag_.valid())
     {
@@ -653,6 +662,7 @@ void Foam::canopyCoupling::beginTimeStep()
 {
     failure_.clear();
     structure_.checkpoint();
+    frameOriginTime_ = structure_.time();
     if (addedMass_.size())
     {
         stepStartVelocity_ = structure_.velocities();
@@ -1012,7 +1022,9 @@ bool Foam::canopyCoupling::endTimeStep()
     if (!failed() && followPayload_)
     {
         const vector shift = frameVelocity_*mesh_.time().deltaTValue();
+        const scalar shiftTime = frameOriginTime_;
         frameOrigin_ += shift;
+        frameOriginTime_ = structure_.time();
         placeMarkers();
         const string problem(updateStencils());
         if (problem.empty())
@@ -1022,6 +1034,7 @@ bool Foam::canopyCoupling::endTimeStep()
         else
         {
             frameOrigin_ -= shift;
+            frameOriginTime_ = shiftTime;
             failure_ =
                 "at t = " + mesh_.time().timeName() + " (frame moved), "
               + problem;

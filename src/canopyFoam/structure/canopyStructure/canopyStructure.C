@@ -122,7 +122,8 @@ Foam::canopyStructure::canopyStructure
     restarted_(false),
     lastWriteTime_(0),
     haveLastWrite_(false),
-    warnedTime_(false)
+    warnedTime_(false),
+    initialVelocity_(Zero)
 {
     const IOdictionary properties
     (
@@ -187,7 +188,8 @@ Foam::canopyStructure::canopyStructure
     restarted_(false),
     lastWriteTime_(0),
     haveLastWrite_(false),
-    warnedTime_(false)
+    warnedTime_(false),
+    initialVelocity_(Zero)
 {
     build(defaultGravity);
 }

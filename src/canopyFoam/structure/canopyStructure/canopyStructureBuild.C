@@ -742,6 +742,7 @@ void Foam::canopyStructure::build(const vector& defaultGravity)
     // ---- gravity, integrator, fixed nodes ------------------------------------
 
     const vector g = top.getVector("gravity", defaultGravity);
+    initialVelocity_ = top.getVector("initialVelocity", Zero);
 
     wordList integrators(canopy_integrator_count());
     forAll(integrators, i)
@@ -966,6 +967,23 @@ void Foam::canopyStructure::build(const vector& defaultGravity)
         FUNCTION_NAME, "canopy_model_set_implicit_controls"
     );
     check(canopy_model_set_speed_limit(m, speedLimit), FUNCTION_NAME, "canopy_model_set_speed_limit");
+
+    if (initialVelocity_ != vector::zero)
+    {
+        List<scalar> v(3*nNodes());
+        for (label i = 0; i < nNodes(); ++i)
+        {
+            for (direction d = 0; d < 3; ++d)
+            {
+                v[3*i + d] = initialVelocity_[d];
+            }
+        }
+        check
+        (
+            canopy_model_set_velocities(m, v.cdata(), nNodes()),
+            FUNCTION_NAME, "canopy_model_set_velocities"
+        );
+    }
 
     if (debug)
     {

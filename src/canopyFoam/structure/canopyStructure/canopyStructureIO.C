@@ -923,6 +923,15 @@ void Foam::canopyStructure::readInitialState(const fileName& h5)
     Pstream::scatter(stepTime);
     Pstream::scatter(stepName);
 
+    // initialVelocity comes on top of the state's velocities
+    for (label i = 0; i < n; ++i)
+    {
+        for (direction d = 0; d < 3; ++d)
+        {
+            v[3*i + d] += initialVelocity_[d];
+        }
+    }
+
     canopy_model* m = model_.get();
     check
     (
