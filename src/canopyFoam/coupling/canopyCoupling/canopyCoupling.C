@@ -8,6 +8,8 @@
 #include "surfaceInterpolate.H"
 #include "canopy.h"
 #include "Switch.H"
+#include "treeDataCell.H"
+#include "indexedOctree.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -118,6 +120,57 @@ Foam::tmp<Foam::scalarField> Foam::canopyCoupling::markerVolumes() const
 }
 
 
+Foam::tmp<Foam::scalarField> Foam::canopyCoupling::localCellSizes
+(
+    const pointField& points,
+    const scalar deflt
+) const
+{
+    tmp<scalarField> tsize(new scalarField(points.size(), GREAT));
+    scalarField& size = tsize.ref();
+    const indexedOctree<treeDataCell>& tree = mesh_.cellTree();
+    forAll(points, i)
+    {
+        const label celli = tree.findInside(points[i]);
+        if (celli >= 0)
+        {
+            size[i] = Foam::cbrt(mesh_.V()[celli]);
+        }
+    }
+    Pstream::listCombineGather(size, minEqOp<scalar>());
+    Pstream::listCombineScatter(size);
+    forAll(size, i)
+    {
+        if (size[i] >= GREAT)
+        {
+            size[i] = deflt;
+        }
+    }
+    return tsize;
+}
+
+
+Foam::labelList Foam::canopyCoupling::readMarkerLevels() const
+{
+    IOobject io
+    (
+        "canopyCoupling",
+        mesh_.time().timeName(),
+        "uniform",
+        mesh_,
+        IOobject::MUST_READ,
+        IOobject::NO_WRITE,
+        false
+    );
+    if (mesh_.time().value() == 0 || !io.typeHeaderOk<IOdictionary>(true))
+    {
+        return labelList();
+    }
+    const IOdictionary state(io);
+    return state.getOrDefault<labelList>("markerLevels", labelList());
+}
+
+
 void Foam::canopyCoupling::spreadForce()
 {
     sectionTimer timer(ibSeconds_);
@@ -203,6 +256,7 @@ void Foam::canopyCoupling::writeCouplingState() const
         )
     );
     state.add("markerForce", markerForceTotal_);
+    state.add("markerLevels", markers_->levels());
     state.add("frameOrigin", frameOrigin_);
     state.add("frameVelocity", frameVelocity_);
     if (lineDrag_.valid())
@@ -524,8 +578,10 @@ Foam::canopyCoupling::canopyCoupling
 
     kernel_ = deltaKernel::New(dict.getOrDefault<word>("kernel", "roma3"));
 
+    // Marker spacing: coupling.markerSpacing, else the local cell size
+    // (the smallest cell's where a triangle is in no cell)
     scalar spacing = Foam::cbrt(gMin(mesh.V().field()));
-    dict.readIfPresent("markerSpacing", spacing);
+    const bool uniformSpacing = dict.readIfPresent("markerSpacing", spacing);
     if (!(spacing > 0))
     {
         FatalIOErrorInFunction(dict)
@@ -553,7 +609,21 @@ Foam::canopyCoupling::canopyCoupling
         }
     }
 
-    markers_.reset(new canopyMarkers(structure_.model(), spacing));
+    // The triangles' subdivision: a restart's own (so that its markers
+    // match the forces it carries), else from the spacing
+    labelList levels(readMarkerLevels());
+    const label nTriangles = structure_.nTriangles();
+    if (levels.size() != nTriangles)
+    {
+        const scalarField triangleSpacing
+        (
+            uniformSpacing
+          ? scalarField(nTriangles, spacing)
+          : localCellSizes(structure_.triangleCentres(), spacing)()
+        );
+        levels = canopyMarkers::levels(structure_.model(), triangleSpacing);
+    }
+    markers_.reset(new canopyMarkers(structure_.model(), levels));
     velocityStencil_.reset(new ibStencil(mesh, kernel_()));
     plusStencil_.reset(new ibStencil(mesh, kernel_()));
     minusStencil_.reset(new ibStencil(mesh, kernel_()));
@@ -615,7 +685,8 @@ Foam::canopyCoupling::canopyCoupling
     Info<< "canopyCoupling: "
         << (scheme_ == scheme::strong ? "strong" : "explicit") << " coupling, "
         << markers_->size() << " markers on " << nt << " canopy triangles"
-        << " (spacing " << spacing << " m), kernel "
+        << " (spacing " << (uniformSpacing ? "" : "local cell size, min ")
+        << spacing << " m), kernel "
         << dict.getOrDefault<word>("kernel", "roma3")
         << ", " << forcingIterations_ << " forcing iterations, "
         << tangential;

@@ -48,24 +48,71 @@ void subdivide
 } // End anonymous namespace
 
 
-Foam::canopyMarkers::canopyMarkers
+Foam::labelList Foam::canopyMarkers::levels
 (
     const canopy_model* model,
-    const scalar spacing
+    const scalarField& triangleSpacing
 )
 {
-    if (!(spacing > 0))
-    {
-        FatalErrorInFunction
-            << "marker spacing " << spacing << " must be > 0"
-            << exit(FatalError);
-    }
     const int n = canopy_model_node_count(model);
     const int nt = canopy_model_triangle_count(model);
+    if (triangleSpacing.size() != nt)
+    {
+        FatalErrorInFunction
+            << triangleSpacing.size() << " marker spacings for " << nt
+            << " canopy triangles" << exit(FatalError);
+    }
     List<double> x(3*n);
     List<int> tri(3*nt);
     canopy_model_get_positions(model, x.data(), n);
     canopy_model_get_triangles(model, tri.data(), nt);
+
+    labelList result(nt, 0);
+    for (int t = 0; t < nt; ++t)
+    {
+        if (!(triangleSpacing[t] > 0))
+        {
+            FatalErrorInFunction
+                << "marker spacing " << triangleSpacing[t] << " of canopy"
+                << " triangle " << t << " must be > 0" << exit(FatalError);
+        }
+        scalar longest = 0;
+        for (int k = 0; k < 3; ++k)
+        {
+            const int i = tri[3*t + k], j = tri[3*t + (k + 1) % 3];
+            const vector d(x[3*j] - x[3*i], x[3*j+1] - x[3*i+1], x[3*j+2] - x[3*i+2]);
+            longest = max(longest, mag(d));
+        }
+        label level = 0;
+        while
+        (
+            level < 5
+         && longest/Foam::pow(2.0, level) > 1.5*triangleSpacing[t]
+        )
+        {
+            ++level;
+        }
+        result[t] = level;
+    }
+    return result;
+}
+
+
+Foam::canopyMarkers::canopyMarkers
+(
+    const canopy_model* model,
+    const labelList& levels
+)
+:
+    levels_(levels)
+{
+    const int nt = canopy_model_triangle_count(model);
+    if (levels.size() != nt)
+    {
+        FatalErrorInFunction
+            << levels.size() << " subdivision levels for " << nt
+            << " canopy triangles" << exit(FatalError);
+    }
 
     DynamicList<label> parent;
     DynamicList<FixedList<scalar, 3>> bary;
@@ -76,20 +123,14 @@ Foam::canopyMarkers::canopyMarkers
     for (int t = 0; t < nt; ++t)
     {
         triangleStart_[t] = parent.size();
-        scalar longest = 0;
-        for (int k = 0; k < 3; ++k)
+        if (levels[t] < 0 || levels[t] > 5)
         {
-            const int i = tri[3*t + k], j = tri[3*t + (k + 1) % 3];
-            const vector d(x[3*j] - x[3*i], x[3*j+1] - x[3*i+1], x[3*j+2] - x[3*i+2]);
-            longest = max(longest, mag(d));
-        }
-        int level = 0;
-        while (level < 5 && longest/Foam::pow(2.0, level) > 1.5*spacing)
-        {
-            ++level;
+            FatalErrorInFunction
+                << "subdivision level " << levels[t] << " of canopy triangle "
+                << t << " is not in 0 .. 5" << exit(FatalError);
         }
         DynamicList<FixedList<scalar, 3>> sub;
-        subdivide(e0, e1, e2, level, sub);
+        subdivide(e0, e1, e2, levels[t], sub);
         forAll(sub, s)
         {
             parent.append(t);
