@@ -350,7 +350,8 @@ def structure_studies():
     out = subprocess.run([exe], capture_output=True, text=True).stdout
     keep, lines = False, []
     for line in out.splitlines():
-        if line.startswith("Delta E / E0") or line.startswith("Model-I"):
+        if line.startswith("Delta E / E0") or line.startswith("Model-I") \
+                or line.startswith("m = "):
             keep = True
         if keep:
             lines.append(line)
@@ -358,6 +359,96 @@ def structure_studies():
                 line.startswith("PASS drum_spectrum"):
             keep = False
     return lines
+
+
+def plot_structure(lines):
+    """Plots of the structure-alone studies from the canopy-tests lines:
+    seed Table 5.1's energy change, the drum spectrum's cut-off (seed Fig.
+    5.4) and the eigen-frequency bounds (seed ch. 3). Returns the figure's
+    path relative to the report, or None when the lines hold no data."""
+    import re
+    energy = {}     # scheme -> [(N, measured, predicted, seed or nan)]
+    drum = []       # (m, cut-off, seed cut-off, strongest peak, above ratio)
+    bounds = []     # (model, largest omega, bound)
+    for line in lines:
+        m = re.match(r"\s+\w+ order \((\w[\w-]*)\)\s+N=(\d+)\s+(\S+) \|\s+(\S+) \|"
+                     r"\s+(\S+)", line)
+        if m:
+            try:
+                seed = float(m.group(5))    # "inf": the seed's overflow
+            except ValueError:
+                seed = float("nan")
+            if math.isinf(seed):
+                seed = float("nan")
+            energy.setdefault(m.group(1), []).append(
+                (int(m.group(2)), float(m.group(3)), float(m.group(4)), seed))
+            continue
+        m = re.match(r"m = ([\d.]+): cut-off ([\d.]+) Hz \(seed ([\d.]+)\);"
+                     r".*strongest peak ([\d.]+) Hz; largest magnitude above"
+                     r" cut-off ([\d.]+)", line)
+        if m:
+            drum.append(tuple(float(g) for g in m.groups()))
+            continue
+        m = re.match(r"(Model-I+)\s*: .*largest omega ([\d.]+) rad/s.*"
+                     r"bound [^=]+= ([\d.]+)", line)
+        if m:
+            bounds.append((m.group(1), float(m.group(2)), float(m.group(3))))
+    if not energy and not drum:
+        return None
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    os.makedirs(FIG_DIR, exist_ok=True)
+    fig, axes = plt.subplots(1, 3, figsize=(13, 4.2))
+    ax = axes[0]
+    for scheme, rows in sorted(energy.items()):
+        rows.sort()
+        N = [r[0] for r in rows]
+        line, = ax.loglog(N, [abs(r[2]) for r in rows], "-", lw=1,
+                          label="%s: χ^(2N) − 1" % scheme)
+        ax.loglog(N, [abs(r[1]) for r in rows], "o", color=line.get_color(),
+                  mfc="none", label="%s: measured" % scheme)
+        seeds = [(r[0], abs(r[3])) for r in rows if r[3] == r[3]]
+        if seeds:
+            ax.loglog(*zip(*seeds), "x", color=line.get_color(),
+                      label="%s: seed Table 5.1" % scheme)
+    ax.set_ylim(1e-7, 1e20)
+    ax.set_xlabel("steps N at ω·Δt = 0.1")
+    ax.set_ylabel("|ΔE / E0|")
+    ax.set_title("Energy change (seed Table 5.1)")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=6, ncol=1)
+    ax = axes[1]
+    if drum:
+        x = np.arange(len(drum))
+        ax.bar(x - 0.2, [d[1] for d in drum], 0.4, label="cut-off √(7k/m)/2π")
+        ax.bar(x + 0.2, [d[3] for d in drum], 0.4,
+               label="strongest peak of the spectrum")
+        for i, d in enumerate(drum):
+            ax.text(i, max(d[1], d[3]) * 1.03, "above cut-off:\n%.1g of peak"
+                    % d[4], ha="center", fontsize=7)
+        ax.set_xticks(x)
+        ax.set_xticklabels(["m = %g" % d[0] for d in drum])
+        ax.set_ylabel("frequency [Hz]")
+        ax.set_ylim(0, max(d[1] for d in drum) * 1.35)
+        ax.legend(fontsize=7, loc="upper left")
+    ax.set_title("Drum spectrum, k = 1000 (seed Fig. 5.4)")
+    ax = axes[2]
+    if bounds:
+        x = np.arange(len(bounds))
+        ax.bar(x - 0.2, [b[1] for b in bounds], 0.4,
+               label="largest eigen-frequency")
+        ax.bar(x + 0.2, [b[2] for b in bounds], 0.4, label="seed bound")
+        ax.set_xticks(x)
+        ax.set_xticklabels([b[0] for b in bounds])
+        ax.set_ylabel("ω [rad/s]")
+        ax.legend(fontsize=7, loc="lower right")
+    ax.set_title("Eigen-frequency bounds (seed ch. 3)")
+    fig.tight_layout()
+    path = os.path.join(FIG_DIR, "structure.png")
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return os.path.relpath(path, os.path.dirname(DOC))
 
 
 def write_report():
@@ -432,13 +523,19 @@ def write_report():
         fig = plot_study(name, title, results, refs)
         if fig:
             md += ["![%s](%s)" % (title, fig), ""]
+    structure_lines = structure_studies()
     md += ["## The structure alone: energy and time-step studies", "",
            "From `build/canopy/bin/canopy-tests` (the assertions are in "
            "tests/canopy/test_energy_table.c and test_eigen_bound.c): the "
            "energy change of Euler, Heun and RK4 at ω·Δt = 0.1 against "
-           "seed Table 5.1 and the prediction χ^(2N) − 1, and the largest "
-           "eigenfrequency of the drum against the bounds of seed ch. 3.",
-           "", "```"] + structure_studies() + ["```", ""]
+           "seed Table 5.1 and the prediction χ^(2N) − 1, the drum's "
+           "spectrum against its cut-off frequency (seed Fig. 5.4), and the "
+           "largest eigenfrequency of the drum against the bounds of seed "
+           "ch. 3.",
+           "", "```"] + structure_lines + ["```", ""]
+    fig = plot_structure(structure_lines)
+    if fig:
+        md += ["![The structure alone](%s)" % fig, ""]
     with open(DOC, "w") as f:
         f.write("\n".join(md))
     print("canopy-validate: wrote %s" % DOC)
