@@ -7,7 +7,7 @@
 #include "extrapolatedCalculatedFvPatchFields.H"
 #include "surfaceInterpolate.H"
 #include "canopy.h"
-#include "Switch.H"
+#include "switchToken.H"
 #include "treeDataCell.H"
 #include "indexedOctree.H"
 
@@ -31,29 +31,18 @@ bool readSwitch
         return deflt;
     }
     ITstream& is = dict.lookup(key);
-    if (is.size() == 1)
+    bool value = deflt;
+    if (is.size() == 1 && readSwitchToken(is[0], value))
     {
-        const token& tok = is[0];
-        if (tok.isBool())
-        {
-            return tok.boolToken();
-        }
-        if (tok.isWord())
-        {
-            const Switch sw(tok.wordToken(), true);
-            if (sw.valid())
-            {
-                return bool(sw);
-            }
-        }
+        return value;
     }
-    OStringStream value;
+    OStringStream given;
     forAll(is, i)
     {
-        value << (i ? " " : "") << is[i];
+        given << (i ? " " : "") << is[i];
     }
     FatalIOErrorInFunction(dict)
-        << "Entry 'coupling." << key << "' = " << value.str().c_str()
+        << "Entry 'coupling." << key << "' = " << given.str().c_str()
         << " must be a switch (true/false, on/off, yes/no)"
         << exit(FatalIOError);
     return deflt;
@@ -150,18 +139,27 @@ Foam::tmp<Foam::scalarField> Foam::canopyCoupling::localCellSizes
 }
 
 
-Foam::labelList Foam::canopyCoupling::readMarkerLevels() const
+Foam::IOobject Foam::canopyCoupling::couplingStateIO
+(
+    const IOobject::readOption r
+) const
 {
-    IOobject io
+    return IOobject
     (
         "canopyCoupling",
         mesh_.time().timeName(),
         "uniform",
         mesh_,
-        IOobject::MUST_READ,
+        r,
         IOobject::NO_WRITE,
         false
     );
+}
+
+
+Foam::labelList Foam::canopyCoupling::readMarkerLevels() const
+{
+    IOobject io(couplingStateIO(IOobject::MUST_READ));
     if (mesh_.time().value() == 0 || !io.typeHeaderOk<IOdictionary>(true))
     {
         return labelList();
@@ -188,16 +186,7 @@ void Foam::canopyCoupling::spreadForce()
 
 void Foam::canopyCoupling::readCouplingState()
 {
-    IOobject io
-    (
-        "canopyCoupling",
-        mesh_.time().timeName(),
-        "uniform",
-        mesh_,
-        IOobject::MUST_READ,
-        IOobject::NO_WRITE,
-        false
-    );
+    IOobject io(couplingStateIO(IOobject::MUST_READ));
     if (!io.typeHeaderOk<IOdictionary>(true))
     {
         WarningInFunction
@@ -242,19 +231,7 @@ void Foam::canopyCoupling::readCouplingState()
 
 void Foam::canopyCoupling::writeCouplingState() const
 {
-    IOdictionary state
-    (
-        IOobject
-        (
-            "canopyCoupling",
-            mesh_.time().timeName(),
-            "uniform",
-            mesh_,
-            IOobject::NO_READ,
-            IOobject::NO_WRITE,
-            false
-        )
-    );
+    IOdictionary state(couplingStateIO(IOobject::NO_READ));
     state.add("markerForce", markerForceTotal_);
     state.add("markerLevels", markers_->levels());
     state.add("frameOrigin", frameOrigin_);
@@ -1098,11 +1075,7 @@ bool Foam::canopyCoupling::endTimeStep()
         frameOriginTime_ = structure_.time();
         placeMarkers();
         const string problem(updateStencils());
-        if (problem.empty())
-        {
-            spreadForce();
-        }
-        else
+        if (!problem.empty())
         {
             frameOrigin_ -= shift;
             frameOriginTime_ = shiftTime;
@@ -1131,10 +1104,12 @@ bool Foam::canopyCoupling::endTimeStep()
         // The reaction acts from where the lines are now (and where the
         // next step's drag is computed): a restart, which knows only this
         // state, places it the same way
-        {
-            sectionTimer timer(ibSeconds_);
-            lineDrag_->place(structure_.model(), frameOrigin_);
-        }
+        sectionTimer timer(ibSeconds_);
+        lineDrag_->place(structure_.model(), frameOrigin_);
+    }
+    if (followPayload_ || lineDrag_.valid())
+    {
+        // The force from the markers' and the lines' new places
         spreadForce();
     }
 

@@ -20,7 +20,7 @@ Description
 
 #include "canopyStructure.H"
 #include "OStringStream.H"
-#include "Switch.H"
+#include "switchToken.H"
 #include "FlatOutput.H"
 
 #include "canopy.h"
@@ -248,17 +248,10 @@ public:
             return deflt;
         }
         const token& tok = single(key, "true or false");
-        if (tok.isBool())
+        bool value = deflt;
+        if (readSwitchToken(tok, value))
         {
-            return tok.boolToken();
-        }
-        if (tok.isWord())
-        {
-            const Switch sw(tok.wordToken(), true);
-            if (sw.valid())
-            {
-                return bool(sw);
-            }
+            return value;
         }
         fail
         (
