@@ -21,6 +21,7 @@ Description
     - one-sided stencils at reference + side*delta*n, delta = 1.5 cells
       along a random normal n, for side = +1 and -1: no cell on the wrong
       side, the same exactness checks;
+    - interpolateSpread(F) = interpolate(spread(F));
     - spreading of random marker forces F_m: sum_i f_i V_i = sum_m F_m and
       sum_i f_i.q_i V_i = sum_m F_m.q(X_m) (adjointness, q a smooth
       nonlinear field) to tol relative;
@@ -486,6 +487,28 @@ void checkStencil
         mag(lhs - rhs)/normFq,
         tol
     );
+
+    // interpolateSpread = interpolate after spread (on the stencils' cells
+    // only; the forcing iterations use it)
+    {
+        vectorField viaMesh;
+        st.interpolate(f, viaMesh);
+        List<vector> direct;
+        st.interpolateSpread(F, direct);
+        scalar diff = 0;
+        scalar scale = VSMALL;
+        forAll(viaMesh, m)
+        {
+            diff = max(diff, mag(direct[m] - viaMesh[m]));
+            scale = max(scale, mag(viaMesh[m]));
+        }
+        check
+        (
+            "max |interpolateSpread(F) - interpolate(spread(F))|/max",
+            diff/scale,
+            tol
+        );
+    }
 
     // Scalar spreading
     scalarField fs(mesh.nCells(), Zero);

@@ -417,6 +417,7 @@ Foam::canopyCoupling::canopyCoupling
     lineDrag_(),
     UName_("U"),
     markerForceTotal_(),
+    lastIncrement_(),
     markerForceStart_(),
     force_
     (
@@ -748,10 +749,7 @@ void Foam::canopyCoupling::beginTimeStep()
 }
 
 
-Foam::tmp<Foam::volVectorField> Foam::canopyCoupling::forcingIncrement
-(
-    const volVectorField& U
-)
+void Foam::canopyCoupling::forcingIncrement(const volVectorField& U)
 {
     const scalar dt = mesh_.time().deltaTValue();
     sectionTimer timer(ibSeconds_);
@@ -761,23 +759,15 @@ Foam::tmp<Foam::volVectorField> Foam::canopyCoupling::forcingIncrement
     const scalarField vn(mk.toMarkers(normalVelocity_));
     const vectorField vt(mk.toMarkers(triangleVelocity_));
 
-    volVectorField Ustar("canopyUstar", U);
-    tmp<volVectorField> tdForce
-    (
-        new volVectorField
-        (
-            IOobject("canopyForceIncrement", mesh_.time().timeName(), mesh_),
-            mesh_,
-            dimensionedVector(force_.dimensions(), Zero)
-        )
-    );
-    volVectorField& dForce = tdForce.ref();
+    // The iterations work on the markers' velocities alone: spreading F
+    // and advancing dt changes them by dt I S F (I interpolation, S
+    // spreading), which the stencils give without touching the whole mesh
+    vectorField Um(velocityStencil_->interpolate(U));
     vectorField markerForce(mk.size(), Zero);
     scalar slip = 0;
 
     for (label k = 0; k < forcingIterations_; ++k)
     {
-        const vectorField Um(velocityStencil_->interpolate(Ustar));
         vectorField F(mk.size());
         forAll(F, m)
         {
@@ -795,20 +785,32 @@ Foam::tmp<Foam::volVectorField> Foam::canopyCoupling::forcingIncrement
             }
         }
         markerForce += F;
-        vectorField df(mesh_.nCells(), Zero);
-        velocityStencil_->spread(F, df);
-        dForce.primitiveFieldRef() += df;
-        Ustar.primitiveFieldRef() += dt*df;
-        Ustar.correctBoundaryConditions();
+        if (k + 1 < forcingIterations_)
+        {
+            List<vector> dUm;
+            velocityStencil_->interpolateSpread(F, dUm);
+            Um += dt*dUm;
+        }
     }
 
+    lastIncrement_ = markerForce;
     markerForceTotal_ += markerForce;
-    force_.primitiveFieldRef() += dForce.primitiveField();
+    velocityStencil_->spread(markerForce, force_.primitiveFieldRef());
     force_.correctBoundaryConditions();
     faceForce_.clear();
     markerForce_ = sum(markerForceTotal_);
     slip_ = slip/max(Uref_, vn.size() ? max(mag(vn)) : 0);
-    return tdForce;
+}
+
+
+void Foam::canopyCoupling::addForcingIncrement
+(
+    const scalar factor,
+    vectorField& cellField
+) const
+{
+    sectionTimer timer(ibSeconds_);
+    velocityStencil_->spread(vectorField(factor*lastIncrement_), cellField);
 }
 
 

@@ -550,6 +550,22 @@ void Foam::ibStencil::calcStencils
         }
     }
 
+    // The stencils' distinct cells, for interpolateSpread
+    labelList slot(mesh_.nCells(), -1);
+    DynamicList<label> stencilCells(cells_.size());
+    entrySlot_.setSize(cells_.size());
+    forAll(cells_, k)
+    {
+        label& s = slot[cells_[k]];
+        if (s < 0)
+        {
+            s = stencilCells.size();
+            stencilCells.append(cells_[k]);
+        }
+        entrySlot_[k] = s;
+    }
+    stencilCells_.transfer(stencilCells);
+
     if (debug)
     {
         Info<< typeName << ": " << nMarkers_ << " markers, "
@@ -582,6 +598,8 @@ Foam::ibStencil::ibStencil
     offsets_(1, Zero),
     cells_(),
     weights_(),
+    stencilCells_(),
+    entrySlot_(),
     markerCell_(),
     owner_(),
     moments_(),

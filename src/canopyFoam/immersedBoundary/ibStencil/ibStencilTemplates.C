@@ -87,4 +87,48 @@ void Foam::ibStencil::spread
 }
 
 
+
+template<class Type>
+void Foam::ibStencil::interpolateSpread
+(
+    const UList<Type>& markerValues,
+    List<Type>& result
+) const
+{
+    if (markerValues.size() != nMarkers_)
+    {
+        FatalErrorInFunction
+            << "Marker values of size " << markerValues.size()
+            << " for " << nMarkers_ << " markers" << exit(FatalError);
+    }
+
+    const scalarField& V = mesh_.cellVolumes();
+
+    // The spread densities on the stencils' cells
+    List<Type> density(stencilCells_.size(), Zero);
+    for (label m = 0; m < nMarkers_; ++m)
+    {
+        const Type& F = markerValues[m];
+        for (label k = offsets_[m]; k < offsets_[m + 1]; ++k)
+        {
+            density[entrySlot_[k]] += (weights_[k]/V[cells_[k]])*F;
+        }
+    }
+
+    result.setSize(nMarkers_);
+    for (label m = 0; m < nMarkers_; ++m)
+    {
+        Type sum(Zero);
+        for (label k = offsets_[m]; k < offsets_[m + 1]; ++k)
+        {
+            sum += weights_[k]*density[entrySlot_[k]];
+        }
+        result[m] = sum;
+    }
+
+    Pstream::listCombineGather(result, plusEqOp<Type>());
+    Pstream::listCombineScatter(result);
+}
+
+
 // ************************************************************************* //

@@ -73,8 +73,12 @@ void Foam::fv::canopyImmersedBoundary::addSup
 
 void Foam::fv::canopyImmersedBoundary::correct(volVectorField& U)
 {
-    const tmp<volVectorField> dForce(coupling_.forcingIncrement(U));
-    U.primitiveFieldRef() += mesh_.time().deltaTValue()*dForce().primitiveField();
+    coupling_.forcingIncrement(U);
+    coupling_.addForcingIncrement
+    (
+        mesh_.time().deltaTValue(),
+        U.primitiveFieldRef()
+    );
     U.correctBoundaryConditions();
 }
 
