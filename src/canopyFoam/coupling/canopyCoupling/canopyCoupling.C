@@ -879,10 +879,41 @@ Foam::tmp<Foam::volVectorField> Foam::canopyCoupling::reconstruct
                 IOobject::NO_READ,
                 IOobject::NO_WRITE
             ),
-            reconstructInverse_() & fvc::surfaceSum(SfHat_()*ssf),
+            mesh_,
+            dimensioned<vector>(ssf.dimensions()/dimArea, Zero),
             extrapolatedCalculatedFvPatchField<vector>::typeName
         )
     );
+
+    // inv(sum_f SfHat Sf) & sum_f SfHat ssf_f, summed face by face into
+    // the cells (fvc::surfaceSum without the face field of the products)
+    vectorField& result = tfield.ref().primitiveFieldRef();
+    const labelUList& own = mesh_.owner();
+    const labelUList& nei = mesh_.neighbour();
+    const vectorField& SfHat = SfHat_().primitiveField();
+    const scalarField& values = ssf.primitiveField();
+    forAll(own, facei)
+    {
+        const vector v(SfHat[facei]*values[facei]);
+        result[own[facei]] += v;
+        result[nei[facei]] += v;
+    }
+    forAll(mesh_.boundary(), patchi)
+    {
+        const labelUList& faceCells = mesh_.boundary()[patchi].faceCells();
+        const vectorField& pSfHat = SfHat_().boundaryField()[patchi];
+        const scalarField& pValues = ssf.boundaryField()[patchi];
+        forAll(faceCells, i)
+        {
+            result[faceCells[i]] += pSfHat[i]*pValues[i];
+        }
+    }
+    const tensorField& inverse = reconstructInverse_().primitiveField();
+    forAll(result, celli)
+    {
+        result[celli] = inverse[celli] & result[celli];
+    }
+
     tfield.ref().correctBoundaryConditions();
     return tfield;
 }
