@@ -77,6 +77,8 @@ RUNS = [
                                       ("system/fvSolution",
                                        "PIMPLE/nOuterCorrectors", "40")],
         reference="7ft"),
+    Run("7ft-h0.20-8s", SEVEN, "cell 0.20 m, run to t = 8 s",
+        edits=[("system/controlDict", "endTime", "8")], reference="7ft"),
     Run("7ft-alpha100", SEVEN, "alpha 100 Pa s/m (more porous)",
         edits=[(PROPS, "fabric/porosity/alpha", "100")], reference="7ft"),
     Run("7ft-alpha1e4", SEVEN, "alpha 1e4 Pa s/m (nearly closed)",
@@ -105,6 +107,8 @@ RUN_BY_ID = {r.ident: r for r in RUNS}
 STUDIES = [
     ("mesh7ft", "7 ft canopy: mesh convergence",
      ["7ft-h0.30", "7ft-h0.20", "7ft-h0.15"]),
+    ("duration7ft", "7 ft canopy: is 4 s long enough? (the default run to 8 s)",
+     ["7ft-h0.20", "7ft-h0.20-8s"]),
     ("porosity7ft", "7 ft canopy: the effect of porosity",
      ["7ft-alpha100", "7ft-h0.20", "7ft-alpha1e4"]),
     ("T10payload", "T-10: terminal velocity against payload",
@@ -503,7 +507,7 @@ def write_report():
                        ", ".join("%.2f" % v for v in done), 100 * spread,
                        "not mesh-converged" if spread > 0.05 else
                        "within 5 %"), ""]
-        if name in ("mesh7ft", "porosity7ft"):
+        if name in ("mesh7ft", "porosity7ft", "duration7ft"):
             refs = [(4.27, "drop test 4.27 m/s", "--"),
                     (3.9, "seed simulation 3.9 m/s", ":")]
             md += ["Drop test: 4.27 m/s, breathing about 2 Hz; the seed's "
