@@ -69,6 +69,7 @@ Usage
 #include "Time.H"
 #include "fvMesh.H"
 #include "volFields.H"
+#include "testCheck.H"
 #include "Random.H"
 #include "OFstream.H"
 #include "deltaKernel.H"
@@ -82,23 +83,6 @@ using namespace Foam;
 
 namespace
 {
-
-label nChecks = 0;
-label nFailed = 0;
-
-// Record and print one check: value must lie in [0, tol] (NaN fails)
-void check(const string& what, const scalar value, const scalar tol)
-{
-    ++nChecks;
-    const bool ok = (value >= 0 && value <= tol);
-    if (!ok)
-    {
-        ++nFailed;
-    }
-    Info<< "    " << (ok ? "ok  " : "FAIL") << "  " << what.c_str()
-        << " = " << value << "  (limit " << tol << ")" << nl;
-}
-
 
 // Linear fields with known values
 const vector a0(1.0, -2.0, 0.5);

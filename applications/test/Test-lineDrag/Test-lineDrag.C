@@ -46,6 +46,7 @@ Description
 #include "Time.H"
 #include "fvMesh.H"
 #include "volFields.H"
+#include "testCheck.H"
 #include "mathematicalConstants.H"
 #include "deltaKernel.H"
 #include "lineDrag.H"
@@ -55,21 +56,6 @@ using namespace Foam;
 
 namespace
 {
-
-label nChecks = 0;
-label nFailed = 0;
-
-void check(const string& what, const scalar value, const scalar tol)
-{
-    ++nChecks;
-    const bool ok = (value >= 0 && value <= tol);
-    if (!ok)
-    {
-        ++nFailed;
-    }
-    Info<< "    " << (ok ? "ok  " : "FAIL") << "  " << what.c_str()
-        << " = " << value << "  (limit " << tol << ")" << nl;
-}
 
 const scalar rho = 1.2;
 const scalar d = 0.002;

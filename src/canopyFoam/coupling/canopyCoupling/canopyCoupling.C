@@ -48,6 +48,34 @@ bool readSwitch
     return deflt;
 }
 
+
+// A word entry <name> (dict's key) that must be one of valid; the first
+// is the default; anything else stops naming the entry and the choices
+Foam::word readChoice
+(
+    const Foam::dictionary& dict,
+    const Foam::word& key,
+    const Foam::string& name,
+    const Foam::wordList& valid
+)
+{
+    using namespace Foam;
+    const word value(dict.getOrDefault<word>(key, valid[0]));
+    if (!valid.found(value))
+    {
+        OStringStream choices;
+        forAll(valid, i)
+        {
+            choices << (i ? " " : "") << valid[i];
+        }
+        FatalIOErrorInFunction(dict)
+            << "Entry '" << name.c_str() << "' = " << value
+            << " is not valid; valid: " << choices.str().c_str()
+            << exit(FatalIOError);
+    }
+    return value;
+}
+
 } // End anonymous namespace
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -258,14 +286,9 @@ void Foam::canopyCoupling::writeCouplingState() const
 void Foam::canopyCoupling::readFrame(const dictionary& dict)
 {
     const dictionary& frame = dict.subOrEmptyDict("frame");
-    const word type(frame.getOrDefault<word>("type", "fixed"));
-    if (type != "fixed" && type != "payload")
-    {
-        FatalIOErrorInFunction(frame)
-            << "Entry 'coupling.frame.type' = " << type
-            << " is not valid; valid: fixed payload" << exit(FatalIOError);
-    }
-    followPayload_ = type == "payload";
+    followPayload_ =
+        readChoice(frame, "type", "coupling.frame.type", {"fixed", "payload"})
+     == "payload";
     wind_ = frame.getOrDefault<vector>("wind", Zero);
     if (!followPayload_)
     {
@@ -487,14 +510,12 @@ Foam::canopyCoupling::canopyCoupling
     Uref_ = dict.getOrDefault<scalar>("Uref", 1);
     stopIfNotConverged_ = readSwitch(dict, "stopIfNotConverged", true);
     restartFluid_ = readSwitch(dict, "restartFluid", false);
-    const word load(dict.getOrDefault<word>("pressureJump", "sampled"));
-    if (load != "sampled" && load != "ibForce")
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'coupling.pressureJump' = " << load
-            << " is not valid; valid: sampled ibForce" << exit(FatalIOError);
-    }
-    ibForceLoad_ = load == "ibForce";
+    ibForceLoad_ =
+        readChoice
+        (
+            dict, "pressureJump", "coupling.pressureJump", {"sampled", "ibForce"}
+        )
+     == "ibForce";
     const scalar addedMassDensity = dict.getOrDefault<scalar>("addedMass", 0);
     if (!(addedMassDensity >= 0))
     {
@@ -520,14 +541,9 @@ Foam::canopyCoupling::canopyCoupling
         stepStartVelocity_ = structure_.velocities();
     }
 
-    const word tangential(dict.getOrDefault<word>("tangential", "noSlip"));
-    if (tangential != "noSlip" && tangential != "free")
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'coupling.tangential' = " << tangential
-            << " is not valid; valid: noSlip free" << exit(FatalIOError);
-    }
-    noSlip_ = tangential == "noSlip";
+    noSlip_ =
+        readChoice(dict, "tangential", "coupling.tangential", {"noSlip", "free"})
+     == "noSlip";
 
     const struct { const char* name; scalar value; scalar lo; } positive[] =
     {
@@ -667,7 +683,7 @@ Foam::canopyCoupling::canopyCoupling
         << spacing << " m), kernel "
         << dict.getOrDefault<word>("kernel", "roma3")
         << ", " << forcingIterations_ << " forcing iterations, "
-        << tangential;
+        << (noSlip_ ? "noSlip" : "free");
     if (lineDrag_.valid())
     {
         Info<< ", line drag at " << lineDrag_->size() << " points ("

@@ -551,12 +551,15 @@ void Foam::ibStencil::calcStencils
     }
 
     // The stencils' distinct cells, for interpolateSpread
-    labelList slot(mesh_.nCells(), -1);
+    if (cellSlot_.size() != mesh_.nCells())
+    {
+        cellSlot_.setSize(mesh_.nCells(), -1);
+    }
     DynamicList<label> stencilCells(cells_.size());
     entrySlot_.setSize(cells_.size());
     forAll(cells_, k)
     {
-        label& s = slot[cells_[k]];
+        label& s = cellSlot_[cells_[k]];
         if (s < 0)
         {
             s = stencilCells.size();
@@ -565,6 +568,10 @@ void Foam::ibStencil::calcStencils
         entrySlot_[k] = s;
     }
     stencilCells_.transfer(stencilCells);
+    for (const label celli : stencilCells_)
+    {
+        cellSlot_[celli] = -1;
+    }
 
     if (debug)
     {
@@ -605,6 +612,7 @@ Foam::ibStencil::ibStencil
     moments_(),
     marked_(),
     candidates_(),
+    cellSlot_(),
     treeCentres_(),
     centreTree_()
 {}

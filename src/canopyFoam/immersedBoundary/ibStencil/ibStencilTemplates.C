@@ -5,6 +5,34 @@
 
 #include "ibStencil.H"
 
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+template<class Type>
+void Foam::ibStencil::sumToMarkers
+(
+    const UList<Type>& values,
+    const labelUList& index,
+    List<Type>& markerValues
+) const
+{
+    markerValues.setSize(nMarkers_);
+
+    for (label m = 0; m < nMarkers_; ++m)
+    {
+        Type sum(Zero);
+        for (label k = offsets_[m]; k < offsets_[m + 1]; ++k)
+        {
+            sum += weights_[k]*values[index[k]];
+        }
+        markerValues[m] = sum;
+    }
+
+    // Every rank calls this, with or without local stencil entries
+    Pstream::listCombineGather(markerValues, plusEqOp<Type>());
+    Pstream::listCombineScatter(markerValues);
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 template<class Type>
@@ -22,21 +50,7 @@ void Foam::ibStencil::interpolate
             << exit(FatalError);
     }
 
-    markerValues.setSize(nMarkers_);
-
-    for (label m = 0; m < nMarkers_; ++m)
-    {
-        Type sum(Zero);
-        for (label k = offsets_[m]; k < offsets_[m + 1]; ++k)
-        {
-            sum += weights_[k]*cellValues[cells_[k]];
-        }
-        markerValues[m] = sum;
-    }
-
-    // Every rank calls this, with or without local stencil entries
-    Pstream::listCombineGather(markerValues, plusEqOp<Type>());
-    Pstream::listCombineScatter(markerValues);
+    sumToMarkers(cellValues, cells_, markerValues);
 }
 
 
@@ -115,19 +129,7 @@ void Foam::ibStencil::interpolateSpread
         }
     }
 
-    result.setSize(nMarkers_);
-    for (label m = 0; m < nMarkers_; ++m)
-    {
-        Type sum(Zero);
-        for (label k = offsets_[m]; k < offsets_[m + 1]; ++k)
-        {
-            sum += weights_[k]*density[entrySlot_[k]];
-        }
-        result[m] = sum;
-    }
-
-    Pstream::listCombineGather(result, plusEqOp<Type>());
-    Pstream::listCombineScatter(result);
+    sumToMarkers(density, entrySlot_, result);
 }
 
 
