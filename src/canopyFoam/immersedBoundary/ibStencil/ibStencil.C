@@ -157,6 +157,17 @@ Foam::ibStencil::centreTree()
 }
 
 
+void Foam::ibStencil::checkMarkerCount(const label n) const
+{
+    if (n != nMarkers_)
+    {
+        FatalErrorInFunction
+            << "Marker values of size " << n
+            << " for " << nMarkers_ << " markers" << exit(FatalError);
+    }
+}
+
+
 void Foam::ibStencil::calcSpacing(const pointField& points)
 {
     const label nProcs = Pstream::nProcs();

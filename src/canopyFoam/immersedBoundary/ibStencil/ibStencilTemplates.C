@@ -73,12 +73,7 @@ void Foam::ibStencil::spread
     UList<Type>& cellField
 ) const
 {
-    if (markerValues.size() != nMarkers_)
-    {
-        FatalErrorInFunction
-            << "Marker values of size " << markerValues.size()
-            << " for " << nMarkers_ << " markers" << exit(FatalError);
-    }
+    checkMarkerCount(markerValues.size());
     if (cellField.size() != mesh_.nCells())
     {
         FatalErrorInFunction
@@ -101,7 +96,6 @@ void Foam::ibStencil::spread
 }
 
 
-
 template<class Type>
 void Foam::ibStencil::interpolateSpread
 (
@@ -109,12 +103,7 @@ void Foam::ibStencil::interpolateSpread
     List<Type>& result
 ) const
 {
-    if (markerValues.size() != nMarkers_)
-    {
-        FatalErrorInFunction
-            << "Marker values of size " << markerValues.size()
-            << " for " << nMarkers_ << " markers" << exit(FatalError);
-    }
+    checkMarkerCount(markerValues.size());
 
     const scalarField& V = mesh_.cellVolumes();
 
