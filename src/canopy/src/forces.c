@@ -4,17 +4,6 @@
 #include <math.h>
 #include <string.h>
 
-void canopy_triangle_area_normal(const double *x, const int *tri,
-                                 double an[3])
-{
-    const double *a = x + 3 * tri[0], *b = x + 3 * tri[1], *c = x + 3 * tri[2];
-    double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-    double w[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-    an[0] = 0.5 * (u[1] * w[2] - u[2] * w[1]);
-    an[1] = 0.5 * (u[2] * w[0] - u[0] * w[2]);
-    an[2] = 0.5 * (u[0] * w[1] - u[1] * w[0]);
-}
-
 /* Spring and dashpot forces. For spring s between i and j with d = x_j - x_i,
  * l = |d|, e = d / l:
  *   Model-II      f_i = +k (l - l0) e           (seed 000 eq. 2.18)

@@ -139,9 +139,19 @@ canopy_status canopy_state_save(canopy_model *model, canopy_state_copy *copy);
 void canopy_state_load(canopy_model *model, const canopy_state_copy *copy);
 void canopy_state_free(canopy_state_copy *copy);
 
-/* Triangle helpers. area_normal = 1/2 (xb - xa) x (xc - xa). */
-void canopy_triangle_area_normal(const double *x, const int *tri,
-                                 double area_normal[3]);
+/* Triangle helpers. area_normal = 1/2 (xb - xa) x (xc - xa); inline, as
+ * the pressure load evaluates it for every triangle at every force
+ * evaluation. */
+static inline void canopy_triangle_area_normal(const double *x, const int *tri,
+                                               double area_normal[3])
+{
+    const double *a = x + 3 * tri[0], *b = x + 3 * tri[1], *c = x + 3 * tri[2];
+    const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+    const double w[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    area_normal[0] = 0.5 * (u[1] * w[2] - u[2] * w[1]);
+    area_normal[1] = 0.5 * (u[2] * w[0] - u[0] * w[2]);
+    area_normal[2] = 0.5 * (u[0] * w[1] - u[1] * w[0]);
+}
 
 /* Check a node / spring / triangle index; on failure sets the message. */
 canopy_status canopy_check_node(canopy_model *model, int node,

@@ -127,8 +127,13 @@ const Foam::indexedOctree<Foam::treeDataPoint>&
 Foam::ibStencil::centreTree()
 {
     // Rebuild when the cell centres changed (mesh motion or a new mesh);
-    // comparing them costs far less than the searches
-    if (!centreTree_.valid() || treeCentres_ != mesh_.cellCentres())
+    // comparing them costs far less than the searches, and a mesh that
+    // neither moves nor changes its topology is not compared at all
+    if
+    (
+        !centreTree_.valid()
+     || (mesh_.changing() && treeCentres_ != mesh_.cellCentres())
+    )
     {
         centreTree_.clear();
         treeCentres_ = mesh_.cellCentres();
