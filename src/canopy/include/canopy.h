@@ -369,6 +369,17 @@ canopy_status canopy_model_set_hht_alpha(canopy_model *model, double alpha);
 canopy_status canopy_model_set_implicit_controls(canopy_model *model,
                                                  double tolerance,
                                                  int max_iterations);
+/* Bending dashpots (hinge damping): every edge shared by two triangles
+ * damps the rate of its dihedral angle theta with the force
+ *   f_i = -c (dtheta/dt) dtheta/dx_i,  c = eta |e|^2 / (|n1| + |n2|)
+ * (e the shared edge, |n1|, |n2| twice the two triangles' areas), so that
+ * rigid motion and in-plane motion are not damped, but the out-of-plane
+ * flapping of single triangles, which the springs' dashpots (along the
+ * springs) leave undamped, is. eta >= 0 [N m s]; default 0 (none). The
+ * frequency bound includes it. */
+canopy_status canopy_model_set_bending_damping(canopy_model *model,
+                                               double eta);
+
 /* Runaway detection: a step that leaves any node faster than this [m/s]
  * fails with CANOPY_ERR_DIVERGED (as does any NaN/Inf). Default 1e4;
  * pass INFINITY to check only for NaN/Inf. */
@@ -379,6 +390,8 @@ canopy_status canopy_model_set_speed_limit(canopy_model *model, double vmax);
  * dashpot sum C_i = sum_j c_ij,
  *   omega_i^2 = 2 K_i / m_i,   rho_i = 2 C_i / m_i,
  *   Lambda_i  = rho_i / 2 + sqrt(rho_i^2 / 4 + omega_i^2),
+ * where rho_i also holds node i's row sum of the hinge dashpots' damping
+ * matrix over m_i (canopy_model_set_bending_damping; at the current shape),
  * and *omega = max_i Lambda_i over free nodes (rad/s). */
 canopy_status canopy_model_frequency_bound(canopy_model *model,
                                            double *omega);

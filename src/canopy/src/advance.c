@@ -10,7 +10,8 @@ canopy_status canopy_model_frequency_bound(canopy_model *model, double *omega)
     if (st != CANOPY_OK) return st;
     const canopy_nodes *n = &model->nodes;
     const canopy_springs *s = &model->springs;
-    /* Per-node sums of stiffness and dashpot, in work[0] (x: K, y: C). */
+    /* Per-node sums of stiffness and dashpot, in work[0] (x: K, y: C; z: the
+     * hinge dashpots' row sums of C, bending.c). */
     double *sum = model->work[0];
     for (int i = 0; i < 3 * n->count; ++i) sum[i] = 0.0;
     for (int k = 0; k < s->count; ++k) {
@@ -18,12 +19,13 @@ canopy_status canopy_model_frequency_bound(canopy_model *model, double *omega)
         sum[3 * i] += s->k[k];     sum[3 * j] += s->k[k];
         sum[3 * i + 1] += s->c[k]; sum[3 * j + 1] += s->c[k];
     }
+    canopy_hinge_damping_sums(model, n->x, sum + 2, 3);
     double lambda = 0.0;
     for (int i = 0; i < n->count; ++i) {
         if (n->fixed[i]) continue;
         const double m = canopy_effective_mass(model, i);
         const double w2 = 2.0 * sum[3 * i] / m;     /* seed 000 eq. 3.5 */
-        const double rho = 2.0 * sum[3 * i + 1] / m;
+        const double rho = (2.0 * sum[3 * i + 1] + sum[3 * i + 2]) / m;
         const double L = 0.5 * rho + sqrt(0.25 * rho * rho + w2);
         if (L > lambda) lambda = L;
     }

@@ -121,6 +121,8 @@ canopy_status canopy_model_get_forces(canopy_model *model, double *f, int n)
         return canopy_fail(model, CANOPY_ERR_RANGE,
                            "get_forces: count %d does not match the model's %d "
                            "nodes", n, model->nodes.count);
+    const canopy_status st = canopy_model_prepare(model); /* the hinges */
+    if (st != CANOPY_OK) return st;
     canopy_forces(model, model->nodes.x, model->nodes.v, f);
     return CANOPY_OK;
 }

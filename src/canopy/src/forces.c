@@ -1,4 +1,4 @@
-/* forces.c — the one force evaluation every integrator shares: springs, dashpots, gravity, pressure, loads. */
+/* forces.c — the one force evaluation every integrator shares: springs, dashpots, hinge dashpots, gravity, pressure, loads. */
 #include "model_internal.h"
 
 #include <math.h>
@@ -83,6 +83,7 @@ void canopy_forces(const canopy_model *m, const double *x, const double *v,
         f[3 * i + 2] = mi * g[2] + fe[3 * i + 2];
     }
     spring_forces(m, x, v, f);
+    if (m->hinges.count) canopy_hinge_forces(m, x, v, f);
     pressure_forces(m, x, f);
 }
 

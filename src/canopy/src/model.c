@@ -133,6 +133,7 @@ void canopy_model_destroy(canopy_model **model)
     free(m->springs.k); free(m->springs.c); free(m->springs.law);
     free(m->springs.group);
     free(m->tris.nodes); free(m->tris.dp);
+    free(m->hinges.nodes);
     canopy_state_free(&m->checkpoint);
     canopy_state_free(&m->rollback);
     free_work(m);
@@ -395,6 +396,8 @@ canopy_status canopy_model_prepare(canopy_model *model)
         model->work_nodes = n->count;
         model->work_bytes = bytes * CANOPY_WORK_ARRAYS;
     }
+    canopy_status st = canopy_hinges_build(model);
+    if (st != CANOPY_OK) return st;
     model->prepared = 1;
     return CANOPY_OK;
 }
@@ -758,6 +761,20 @@ canopy_status canopy_model_set_implicit_controls(canopy_model *model,
     return CANOPY_OK;
 }
 
+canopy_status canopy_model_set_bending_damping(canopy_model *model,
+                                               double eta)
+{
+    NULL_MODEL_CHECK(model);
+    if (!(eta >= 0.0) || !isfinite(eta))
+        return canopy_fail(model, CANOPY_ERR_ARGUMENT,
+                           "set_bending_damping: eta %g must be finite and "
+                           ">= 0", eta);
+    model->bending_damping = eta;
+    model->prepared = 0; /* the hinges are built (or dropped) by prepare */
+    canopy_clear_message(model);
+    return CANOPY_OK;
+}
+
 canopy_status canopy_model_set_speed_limit(canopy_model *model, double vmax)
 {
     NULL_MODEL_CHECK(model);
@@ -778,6 +795,7 @@ size_t canopy_model_memory_bytes(const canopy_model *model)
     b += (size_t)model->springs.capacity *
          (2 * sizeof(int) + 6 * sizeof(double) + 2);
     b += (size_t)model->tris.capacity * (3 * sizeof(int) + sizeof(double));
+    b += 4 * sizeof(int) * (size_t)model->hinges.count;
     b += model->work_bytes;
     b += 9 * sizeof(double) * (size_t)model->checkpoint.count;
     b += 9 * sizeof(double) * (size_t)model->rollback.count;

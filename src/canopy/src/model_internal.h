@@ -42,6 +42,13 @@ typedef struct canopy_triangles {
     double *dp;         /* pressure jump */
 } canopy_triangles;
 
+/* Hinges (edges shared by two triangles) for the bending dashpots, built
+ * from the triangles by canopy_model_prepare when bending_damping > 0. */
+typedef struct canopy_hinges {
+    int count;
+    int *nodes;         /* 4*count: opposite o1, opposite o2, edge p, edge q */
+} canopy_hinges;
+
 /* Saved state for checkpoint/restore and for failed-step rollback. */
 typedef struct canopy_state_copy {
     int valid;
@@ -55,6 +62,8 @@ struct canopy_model {
     canopy_nodes nodes;
     canopy_springs springs;
     canopy_triangles tris;
+    canopy_hinges hinges;
+    double bending_damping; /* eta of the hinge dashpots [N m s] (bending.c) */
 
     double t;
     int acc_valid;      /* nodes.acc holds the last HHT step's acceleration */
@@ -108,6 +117,17 @@ canopy_status canopy_model_prepare(canopy_model *model);
  * pressure, extra loads. Fixed nodes get their force too (a reaction). */
 void canopy_forces(const canopy_model *model, const double *x, const double *v,
                    double *f);
+/* Hinge dashpots (bending.c): build the hinges from the triangles; add
+ * their forces to f; add C w to y (w at fixed nodes counts as zero, fixed
+ * rows untouched); add each node's Gershgorin row sum of C to
+ * sum[stride * i]. */
+canopy_status canopy_hinges_build(canopy_model *model);
+void canopy_hinge_forces(const canopy_model *model, const double *x,
+                         const double *v, double *f);
+void canopy_hinge_tangent_damping(const canopy_model *model, const double *x,
+                                  const double *w, double *y);
+void canopy_hinge_damping_sums(const canopy_model *model, const double *x,
+                               double *sum, int stride);
 /* Accelerations (3*n): forces over effective mass; zero at fixed nodes. */
 void canopy_accelerations(const canopy_model *model, const double *x,
                           const double *v, double *a);

@@ -632,10 +632,15 @@ void Foam::canopyStructure::build(const vector& defaultGravity)
     canopy_material fabric = canopy_material_fabric_default();
     scalar alpha = 0;
     scalar beta = 0;
+    scalar bendingDamping = 0;
     if (const dictionary* d = top.optionalDict("fabric"))
     {
         const entryReader fr(*d, "fabric");
         readMaterial(fr, sheetKeys, fabric);
+        bendingDamping = fr.nonNegative
+        (
+            "bendingDamping", "hinge dashpot eta [N m s]", 0
+        );
         if (const dictionary* pd = fr.optionalDict("porosity"))
         {
             const entryReader pr(*pd, "fabric.porosity");
@@ -648,7 +653,7 @@ void Foam::canopyStructure::build(const vector& defaultGravity)
             wordList
             {
                 "arealDensity", "stiffness", "tensileStiffness", "damping",
-                "law", "porosity"
+                "bendingDamping", "law", "porosity"
             },
             ""
         );
@@ -947,6 +952,11 @@ void Foam::canopyStructure::build(const vector& defaultGravity)
     const double gArr[3] = {g.x(), g.y(), g.z()};
     check(canopy_model_set_gravity(m, gArr), FUNCTION_NAME, "canopy_model_set_gravity");
     check(canopy_model_set_porosity(m, alpha, beta), FUNCTION_NAME, "canopy_model_set_porosity");
+    check
+    (
+        canopy_model_set_bending_damping(m, bendingDamping),
+        FUNCTION_NAME, "canopy_model_set_bending_damping"
+    );
     check
     (
         canopy_model_set_integrator(m, integratorName.c_str()),

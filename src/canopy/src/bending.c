@@ -1,0 +1,185 @@
+/* bending.c — hinge dashpots: damping of the cloth's bending rate (the dihedral angle between neighbouring triangles). */
+#include "model_internal.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* A hinge is an edge shared by two triangles: opposite nodes o1, o2 and edge
+ * nodes p, q, stored as (o1, o2, p, q). With x1 = o1, x2 = o2, x3 = p,
+ * x4 = q, n1 = (x1 - x3) x (x1 - x4), n2 = (x2 - x4) x (x2 - x3) and
+ * e = x4 - x3, the gradient of the dihedral angle theta is -u_i with
+ *   u1 = |e| n1 / |n1|^2,   u2 = |e| n2 / |n2|^2,
+ *   u3 = ((x1 - x4).e / |e|) n1 / |n1|^2 + ((x2 - x4).e / |e|) n2 / |n2|^2,
+ *   u4 = -(u1 + u2 + u3)
+ * (the bending modes of Bridson, Marino & Fedkiw 2003). The hinge dashpot
+ *   f_i = -c (dtheta/dt) dtheta/dx_i = -c (sum_j u_j.v_j) u_i,
+ *   c = eta |e|^2 / (|n1| + |n2|)
+ * (eta [N m s], the ratio |e|^2 / (|n1| + |n2|) ~ edge / hinge width) only
+ * dissipates: translation and rotation leave theta unchanged, so rigid
+ * motion and momentum are untouched, and a flat sheet's in-plane motion
+ * too. It damps the out-of-plane flapping of single cloth triangles, which
+ * the edge dashpots (along the springs) do not. */
+
+typedef struct hinge_edge {
+    int a, b;       /* edge nodes, a < b */
+    int opposite;   /* the triangle's third node */
+} hinge_edge;
+
+static int compare_edges(const void *pa, const void *pb)
+{
+    const hinge_edge *x = pa, *y = pb;
+    if (x->a != y->a) return x->a < y->a ? -1 : 1;
+    if (x->b != y->b) return x->b < y->b ? -1 : 1;
+    return 0;
+}
+
+canopy_status canopy_hinges_build(canopy_model *m)
+{
+    canopy_hinges *h = &m->hinges;
+    free(h->nodes);
+    h->nodes = NULL;
+    h->count = 0;
+    const canopy_triangles *t = &m->tris;
+    if (m->bending_damping == 0.0 || t->count == 0) return CANOPY_OK;
+
+    const size_t n_edges = 3 * (size_t)t->count;
+    hinge_edge *edges = malloc(n_edges * sizeof *edges);
+    if (edges == NULL)
+        return canopy_fail(m, CANOPY_ERR_MEMORY,
+                           "cannot allocate the hinges of %d triangles",
+                           t->count);
+    for (int k = 0; k < t->count; ++k) {
+        const int *tri = t->nodes + 3 * k;
+        for (int c = 0; c < 3; ++c) {
+            const int p = tri[c], q = tri[(c + 1) % 3];
+            hinge_edge *e = edges + 3 * k + c;
+            e->a = p < q ? p : q;
+            e->b = p < q ? q : p;
+            e->opposite = tri[(c + 2) % 3];
+        }
+    }
+    qsort(edges, n_edges, sizeof *edges, compare_edges);
+
+    /* Edges met twice (a non-manifold edge pairs its triangles in turn) */
+    int count = 0;
+    for (size_t k = 0; k + 1 < n_edges; ++k)
+        if (compare_edges(edges + k, edges + k + 1) == 0) ++count;
+    if (count > 0) {
+        h->nodes = malloc(4 * sizeof(int) * (size_t)count);
+        if (h->nodes == NULL) {
+            free(edges);
+            return canopy_fail(m, CANOPY_ERR_MEMORY,
+                               "cannot allocate %d hinges", count);
+        }
+    }
+    for (size_t k = 0; k + 1 < n_edges; ++k) {
+        if (compare_edges(edges + k, edges + k + 1) != 0) continue;
+        int *hn = h->nodes + 4 * h->count++;
+        hn[0] = edges[k].opposite;
+        hn[1] = edges[k + 1].opposite;
+        hn[2] = edges[k].a;
+        hn[3] = edges[k].b;
+    }
+    free(edges);
+    return CANOPY_OK;
+}
+
+/* The bending modes u (4 x 3) and the dashpot c of hinge k at x; 0 for a
+ * degenerate hinge (a triangle of zero area). */
+static int hinge_modes(const canopy_model *m, const double *x, int k,
+                       double u[4][3], double *c)
+{
+    const int *hn = m->hinges.nodes + 4 * k;
+    const double *x1 = x + 3 * hn[0], *x2 = x + 3 * hn[1];
+    const double *x3 = x + 3 * hn[2], *x4 = x + 3 * hn[3];
+    double d13[3], d14[3], d23[3], d24[3], e[3], n1[3], n2[3];
+    for (int d = 0; d < 3; ++d) {
+        d13[d] = x1[d] - x3[d]; d14[d] = x1[d] - x4[d];
+        d23[d] = x2[d] - x3[d]; d24[d] = x2[d] - x4[d];
+        e[d] = x4[d] - x3[d];
+    }
+    n1[0] = d13[1] * d14[2] - d13[2] * d14[1];
+    n1[1] = d13[2] * d14[0] - d13[0] * d14[2];
+    n1[2] = d13[0] * d14[1] - d13[1] * d14[0];
+    n2[0] = d24[1] * d23[2] - d24[2] * d23[1];
+    n2[1] = d24[2] * d23[0] - d24[0] * d23[2];
+    n2[2] = d24[0] * d23[1] - d24[1] * d23[0];
+    const double N1 = n1[0] * n1[0] + n1[1] * n1[1] + n1[2] * n1[2];
+    const double N2 = n2[0] * n2[0] + n2[1] * n2[1] + n2[2] * n2[2];
+    const double le2 = e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
+    if (!(N1 > 0.0) || !(N2 > 0.0) || !(le2 > 0.0)) return 0;
+    const double le = sqrt(le2);
+    const double s1 = (d14[0] * e[0] + d14[1] * e[1] + d14[2] * e[2]) / le;
+    const double s2 = (d24[0] * e[0] + d24[1] * e[1] + d24[2] * e[2]) / le;
+    for (int d = 0; d < 3; ++d) {
+        const double a1 = n1[d] / N1, a2 = n2[d] / N2;
+        u[0][d] = le * a1;
+        u[1][d] = le * a2;
+        u[2][d] = s1 * a1 + s2 * a2;
+        u[3][d] = -(u[0][d] + u[1][d] + u[2][d]);
+    }
+    *c = m->bending_damping * le2 / (sqrt(N1) + sqrt(N2));
+    return 1;
+}
+
+void canopy_hinge_forces(const canopy_model *m, const double *x,
+                         const double *v, double *f)
+{
+    for (int k = 0; k < m->hinges.count; ++k) {
+        double u[4][3], c;
+        if (!hinge_modes(m, x, k, u, &c)) continue;
+        const int *hn = m->hinges.nodes + 4 * k;
+        double rate = 0.0;
+        for (int a = 0; a < 4; ++a) {
+            const double *va = v + 3 * hn[a];
+            rate += u[a][0] * va[0] + u[a][1] * va[1] + u[a][2] * va[2];
+        }
+        const double s = c * rate;
+        for (int a = 0; a < 4; ++a) {
+            double *fa = f + 3 * hn[a];
+            fa[0] -= s * u[a][0]; fa[1] -= s * u[a][1]; fa[2] -= s * u[a][2];
+        }
+    }
+}
+
+void canopy_hinge_tangent_damping(const canopy_model *m, const double *x,
+                                  const double *w, double *y)
+{
+    const unsigned char *fixed = m->nodes.fixed;
+    for (int k = 0; k < m->hinges.count; ++k) {
+        double u[4][3], c;
+        if (!hinge_modes(m, x, k, u, &c)) continue;
+        const int *hn = m->hinges.nodes + 4 * k;
+        double rate = 0.0;
+        for (int a = 0; a < 4; ++a) {
+            if (fixed[hn[a]]) continue;
+            const double *wa = w + 3 * hn[a];
+            rate += u[a][0] * wa[0] + u[a][1] * wa[1] + u[a][2] * wa[2];
+        }
+        const double s = c * rate;
+        for (int a = 0; a < 4; ++a) {
+            if (fixed[hn[a]]) continue;
+            double *ya = y + 3 * hn[a];
+            ya[0] += s * u[a][0]; ya[1] += s * u[a][1]; ya[2] += s * u[a][2];
+        }
+    }
+}
+
+void canopy_hinge_damping_sums(const canopy_model *m, const double *x,
+                               double *sum, int stride)
+{
+    /* Block Gershgorin on C = c u u^T: row block i sums c |u_i| |u_j| */
+    for (int k = 0; k < m->hinges.count; ++k) {
+        double u[4][3], c;
+        if (!hinge_modes(m, x, k, u, &c)) continue;
+        const int *hn = m->hinges.nodes + 4 * k;
+        double norm[4], total = 0.0;
+        for (int a = 0; a < 4; ++a) {
+            norm[a] = sqrt(u[a][0] * u[a][0] + u[a][1] * u[a][1] +
+                           u[a][2] * u[a][2]);
+            total += norm[a];
+        }
+        for (int a = 0; a < 4; ++a) sum[stride * hn[a]] += c * norm[a] * total;
+    }
+}
