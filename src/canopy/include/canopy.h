@@ -371,14 +371,15 @@ canopy_status canopy_model_set_implicit_controls(canopy_model *model,
                                                  int max_iterations);
 /* Bending dashpots (hinge damping): every edge shared by two triangles
  * damps the rate of its dihedral angle theta with the force
- *   f_i = -c (dtheta/dt) dtheta/dx_i,  c = eta |e|^2 / (|n1| + |n2|)
- * (e the shared edge, |n1|, |n2| twice the two triangles' areas), so that
- * rigid motion and in-plane motion are not damped, but the out-of-plane
- * flapping of single triangles, which the springs' dashpots (along the
- * springs) leave undamped, is. eta >= 0 [N m s]; default 0 (none). The
- * frequency bound includes it. */
+ *   f_i = -c (dtheta/dt) dtheta/dx_i,  c = rate / sum_a (|dtheta/dx_a|^2 / m_a)
+ * over the hinge's four nodes a (fixed nodes left out), so that each
+ * hinge's bending, on its own, decays at `rate` [1/s] whatever the
+ * triangles' size. Rigid motion and in-plane motion are not damped; the
+ * out-of-plane flapping of single triangles, which the springs' dashpots
+ * (along the springs) leave undamped, is. rate >= 0; default 0 (none).
+ * The frequency bound includes it. */
 canopy_status canopy_model_set_bending_damping(canopy_model *model,
-                                               double eta);
+                                               double rate);
 
 /* Runaway detection: a step that leaves any node faster than this [m/s]
  * fails with CANOPY_ERR_DIVERGED (as does any NaN/Inf). Default 1e4;

@@ -13,13 +13,20 @@
  *   u3 = ((x1 - x4).e / |e|) n1 / |n1|^2 + ((x2 - x4).e / |e|) n2 / |n2|^2,
  *   u4 = -(u1 + u2 + u3)
  * (the bending modes of Bridson, Marino & Fedkiw 2003). The hinge dashpot
- *   f_i = -c (dtheta/dt) dtheta/dx_i = -c (sum_j u_j.v_j) u_i,
- *   c = eta |e|^2 / (|n1| + |n2|)
- * (eta [N m s], the ratio |e|^2 / (|n1| + |n2|) ~ edge / hinge width) only
- * dissipates: translation and rotation leave theta unchanged, so rigid
+ *   f_i = -c (dtheta/dt) dtheta/dx_i = -c (sum_j u_j.v_j) u_i
+ * only dissipates: translation and rotation leave theta unchanged, so rigid
  * motion and momentum are untouched, and a flat sheet's in-plane motion
  * too. It damps the out-of-plane flapping of single cloth triangles, which
- * the edge dashpots (along the springs) do not. */
+ * the edge dashpots (along the springs) do not. The hinge's own bending
+ * mode has the inertia m_h = 1 / sum_a (|u_a|^2 / m_a) (the least kinetic
+ * energy for a given dtheta/dt), so
+ *   c = gamma m_h
+ * makes it decay at the rate gamma [1/s] on any mesh: small triangles (a
+ * vent's) get as much damping per unit time as large ones, not the
+ * (size)^-4 more of a bending viscosity. Fixed nodes do not move (1/m = 0).
+ * For smooth motion of curvature rate dkappa/dt the hinges dissipate
+ * ~ gamma rho_s h^2 |dkappa/dt|^2 per area (h the edge length), which
+ * vanishes as the mesh is refined. */
 
 typedef struct hinge_edge {
     int a, b;       /* edge nodes, a < b */
@@ -119,7 +126,15 @@ static int hinge_modes(const canopy_model *m, const double *x, int k,
         u[2][d] = s1 * a1 + s2 * a2;
         u[3][d] = -(u[0][d] + u[1][d] + u[2][d]);
     }
-    *c = m->bending_damping * le2 / (sqrt(N1) + sqrt(N2));
+    double inv_inertia = 0.0;
+    for (int a = 0; a < 4; ++a) {
+        const int i = hn[a];
+        if (m->nodes.fixed[i]) continue;
+        inv_inertia += (u[a][0] * u[a][0] + u[a][1] * u[a][1] +
+                        u[a][2] * u[a][2]) / canopy_effective_mass(m, i);
+    }
+    if (!(inv_inertia > 0.0)) return 0;
+    *c = m->bending_damping / inv_inertia;
     return 1;
 }
 
@@ -169,14 +184,17 @@ void canopy_hinge_tangent_damping(const canopy_model *m, const double *x,
 void canopy_hinge_damping_sums(const canopy_model *m, const double *x,
                                double *sum, int stride)
 {
-    /* Block Gershgorin on C = c u u^T: row block i sums c |u_i| |u_j| */
+    /* Block Gershgorin on C = c u u^T: row block i sums c |u_i| |u_j| over
+     * the free nodes j (fixed nodes do not move: no row, no column) */
     for (int k = 0; k < m->hinges.count; ++k) {
         double u[4][3], c;
         if (!hinge_modes(m, x, k, u, &c)) continue;
         const int *hn = m->hinges.nodes + 4 * k;
         double norm[4], total = 0.0;
         for (int a = 0; a < 4; ++a) {
-            norm[a] = sqrt(u[a][0] * u[a][0] + u[a][1] * u[a][1] +
+            norm[a] = m->nodes.fixed[hn[a]]
+                    ? 0.0
+                    : sqrt(u[a][0] * u[a][0] + u[a][1] * u[a][1] +
                            u[a][2] * u[a][2]);
             total += norm[a];
         }

@@ -762,14 +762,14 @@ canopy_status canopy_model_set_implicit_controls(canopy_model *model,
 }
 
 canopy_status canopy_model_set_bending_damping(canopy_model *model,
-                                               double eta)
+                                               double rate)
 {
     NULL_MODEL_CHECK(model);
-    if (!(eta >= 0.0) || !isfinite(eta))
+    if (!(rate >= 0.0) || !isfinite(rate))
         return canopy_fail(model, CANOPY_ERR_ARGUMENT,
-                           "set_bending_damping: eta %g must be finite and "
-                           ">= 0", eta);
-    model->bending_damping = eta;
+                           "set_bending_damping: rate %g must be finite and "
+                           ">= 0", rate);
+    model->bending_damping = rate;
     model->prepared = 0; /* the hinges are built (or dropped) by prepare */
     canopy_clear_message(model);
     return CANOPY_OK;

@@ -63,7 +63,7 @@ struct canopy_model {
     canopy_springs springs;
     canopy_triangles tris;
     canopy_hinges hinges;
-    double bending_damping; /* eta of the hinge dashpots [N m s] (bending.c) */
+    double bending_damping; /* decay rate of a hinge's bending [1/s] (bending.c) */
 
     double t;
     int acc_valid;      /* nodes.acc holds the last HHT step's acceleration */

@@ -639,7 +639,7 @@ void Foam::canopyStructure::build(const vector& defaultGravity)
         readMaterial(fr, sheetKeys, fabric);
         bendingDamping = fr.nonNegative
         (
-            "bendingDamping", "hinge dashpot eta [N m s]", 0
+            "bendingDamping", "decay rate of each hinge's bending [1/s]", 0
         );
         if (const dictionary* pd = fr.optionalDict("porosity"))
         {
