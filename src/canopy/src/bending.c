@@ -138,28 +138,11 @@ static int hinge_modes(const canopy_model *m, const double *x, int k,
     return 1;
 }
 
-void canopy_hinge_forces(const canopy_model *m, const double *x,
-                         const double *v, double *f)
-{
-    for (int k = 0; k < m->hinges.count; ++k) {
-        double u[4][3], c;
-        if (!hinge_modes(m, x, k, u, &c)) continue;
-        const int *hn = m->hinges.nodes + 4 * k;
-        double rate = 0.0;
-        for (int a = 0; a < 4; ++a) {
-            const double *va = v + 3 * hn[a];
-            rate += u[a][0] * va[0] + u[a][1] * va[1] + u[a][2] * va[2];
-        }
-        const double s = c * rate;
-        for (int a = 0; a < 4; ++a) {
-            double *fa = f + 3 * hn[a];
-            fa[0] -= s * u[a][0]; fa[1] -= s * u[a][1]; fa[2] -= s * u[a][2];
-        }
-    }
-}
-
-void canopy_hinge_tangent_damping(const canopy_model *m, const double *x,
-                                  const double *w, double *y)
+/* y += sign C w, C = sum over hinges of c u u^T; with free_only, fixed
+ * nodes' w count as zero and their rows are left alone. */
+static void apply_hinge_damping(const canopy_model *m, const double *x,
+                                const double *w, double *y, double sign,
+                                int free_only)
 {
     const unsigned char *fixed = m->nodes.fixed;
     for (int k = 0; k < m->hinges.count; ++k) {
@@ -168,17 +151,29 @@ void canopy_hinge_tangent_damping(const canopy_model *m, const double *x,
         const int *hn = m->hinges.nodes + 4 * k;
         double rate = 0.0;
         for (int a = 0; a < 4; ++a) {
-            if (fixed[hn[a]]) continue;
+            if (free_only && fixed[hn[a]]) continue;
             const double *wa = w + 3 * hn[a];
             rate += u[a][0] * wa[0] + u[a][1] * wa[1] + u[a][2] * wa[2];
         }
-        const double s = c * rate;
+        const double s = sign * c * rate;
         for (int a = 0; a < 4; ++a) {
-            if (fixed[hn[a]]) continue;
+            if (free_only && fixed[hn[a]]) continue;
             double *ya = y + 3 * hn[a];
             ya[0] += s * u[a][0]; ya[1] += s * u[a][1]; ya[2] += s * u[a][2];
         }
     }
+}
+
+void canopy_hinge_forces(const canopy_model *m, const double *x,
+                         const double *v, double *f)
+{
+    apply_hinge_damping(m, x, v, f, -1.0, 0);
+}
+
+void canopy_hinge_tangent_damping(const canopy_model *m, const double *x,
+                                  const double *w, double *y)
+{
+    apply_hinge_damping(m, x, w, y, 1.0, 1);
 }
 
 void canopy_hinge_damping_sums(const canopy_model *m, const double *x,
