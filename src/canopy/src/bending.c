@@ -3,7 +3,6 @@
 
 #include <math.h>
 #include <stdlib.h>
-#include <string.h>
 
 /* A hinge is an edge shared by two triangles: opposite nodes o1, o2 and edge
  * nodes p, q, stored as (o1, o2, p, q). With x1 = o1, x2 = o2, x3 = p,
@@ -100,18 +99,20 @@ static int hinge_modes(const canopy_model *m, const double *x, int k,
     const int *hn = m->hinges.nodes + 4 * k;
     const double *x1 = x + 3 * hn[0], *x2 = x + 3 * hn[1];
     const double *x3 = x + 3 * hn[2], *x4 = x + 3 * hn[3];
-    double d13[3], d14[3], d23[3], d24[3], e[3], n1[3], n2[3];
+    double d14[3], d24[3], e[3], n1[3], n2[3];
     for (int d = 0; d < 3; ++d) {
-        d13[d] = x1[d] - x3[d]; d14[d] = x1[d] - x4[d];
-        d23[d] = x2[d] - x3[d]; d24[d] = x2[d] - x4[d];
+        d14[d] = x1[d] - x4[d];
+        d24[d] = x2[d] - x4[d];
         e[d] = x4[d] - x3[d];
     }
-    n1[0] = d13[1] * d14[2] - d13[2] * d14[1];
-    n1[1] = d13[2] * d14[0] - d13[0] * d14[2];
-    n1[2] = d13[0] * d14[1] - d13[1] * d14[0];
-    n2[0] = d24[1] * d23[2] - d24[2] * d23[1];
-    n2[1] = d24[2] * d23[0] - d24[0] * d23[2];
-    n2[2] = d24[0] * d23[1] - d24[1] * d23[0];
+    /* n1, n2: twice the area normals of (x1, x3, x4) and (x2, x4, x3) */
+    const int t1[3] = {hn[0], hn[2], hn[3]}, t2[3] = {hn[1], hn[3], hn[2]};
+    canopy_triangle_area_normal(x, t1, n1);
+    canopy_triangle_area_normal(x, t2, n2);
+    for (int d = 0; d < 3; ++d) {
+        n1[d] *= 2.0;
+        n2[d] *= 2.0;
+    }
     const double N1 = n1[0] * n1[0] + n1[1] * n1[1] + n1[2] * n1[2];
     const double N2 = n2[0] * n2[0] + n2[1] * n2[1] + n2[2] * n2[2];
     const double le2 = e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
