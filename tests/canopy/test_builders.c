@@ -344,6 +344,62 @@ CANOPY_TEST(builders_circular_parabolic_vent_tapes)
     canopy_model_destroy(&m);
 }
 
+/* A vent without radial tapes (the T-10 tutorial's canopy): the rings
+ * inside the skirt are free rings, so the cloth keeps the target edge
+ * length up to the vent instead of narrowing with 30 gores of 0.11 m there
+ * (whose stiffness and flapping set the structure's time step). */
+CANOPY_TEST(builders_circular_parabolic_vent_free_rings)
+{
+    canopy_model *m = NULL;
+    ASSERT_OK(m, canopy_model_create(&m));
+    canopy_circular_spec c = canopy_circular_spec_default();
+    c.diameter = 10.7;
+    c.vent_diameter = 1.07;
+    c.height = 1.6;
+    c.edge_length = 1.25;
+    c.n_attachments = 30;
+    c.center[2] = 1.584;
+    int att[30];
+    ASSERT_OK(m, canopy_build_circular(m, &c, att));
+    snapshot s;
+    ASSERT_TRUE(snapshot_take(m, &s));
+    quality q = measure(&s);
+    print_quality("parabolic T-10 vent, no tapes:", &s, &q);
+
+    const double R = 5.35, rv = 0.535, a = c.height / (R * R);
+    const double z_apex = c.center[2] + a * rv * rv;
+    int n_vent = 0, n_skirt = 0;
+    double vent_polygon = 0.0;  /* area of the hole: a regular polygon */
+    for (int i = 0; i < s.n; ++i) {
+        const double r = hypot(s.x[3 * i], s.x[3 * i + 1]);
+        ASSERT_NEAR(s.x[3 * i + 2], z_apex - a * r * r, 1e-12);
+        if (fabs(r - rv) <= 1e-12) ++n_vent;
+        if (fabs(r - R) <= 1e-12 * R) ++n_skirt;
+    }
+    /* the vent's edge: a 2-fold symmetric free ring of at least 6 nodes
+     * (30 = 2 x 15: multiples of 2), the skirt a gore ring */
+    printf("  vent ring %d nodes, skirt ring %d nodes\n", n_vent, n_skirt);
+    ASSERT_TRUE(n_vent >= 6 && n_vent < 30 && n_vent % 2 == 0);
+    ASSERT_TRUE(n_skirt % 30 == 0);
+    vent_polygon = 0.5 * n_vent * rv * rv * sin(2.0 * PI / n_vent);
+    ASSERT_TRUE(vent_polygon > 0.82 * PI * rv * rv);
+    const int ne = check_edges(&s);
+    ASSERT_TRUE(s.n - ne + s.nt == 0);       /* an annulus */
+    ASSERT_TRUE(q.min_nz > 0.0);
+    /* near-equilateral to the vent: no edge below 40 % of the target (the
+     * gore rings' vent edges are 2 pi rv / 30 = 0.09 e) */
+    ASSERT_TRUE(q.min_edge > 0.4 * c.edge_length);
+    ASSERT_TRUE(q.min_angle > 25.0);
+    /* the attachments still sit on the skirt at the seam angles */
+    for (int k = 0; k < 30; ++k) {
+        const double *p = s.x + 3 * att[k];
+        ASSERT_NEAR(atan2(p[1], p[0]),
+                    atan2(sin(2 * PI * k / 30), cos(2 * PI * k / 30)), 1e-12);
+    }
+    snapshot_free(&s);
+    canopy_model_destroy(&m);
+}
+
 /* Tapes of a canopy without vent end at the apex node: on a flat canopy
  * each seam's tapes add up to the radius exactly. */
 CANOPY_TEST(builders_circular_tapes_to_apex)

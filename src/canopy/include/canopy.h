@@ -208,8 +208,10 @@ canopy_material canopy_material_line_default(void);
  * the vent opening (in the vent's plane) when there is a vent; the skirt
  * lies `height (1 - (r_vent/R)^2)` below it. Rings of nodes start at angle 0
  * and hold a multiple of n_attachments nodes, so the attachments (and
- * gores) sit on nodes; rings near the apex too small for that keep a
- * symmetric count, and radial tapes then end at the apex node. */
+ * gores) sit on nodes; rings too small for that keep a symmetric count:
+ * near the apex (radial tapes then end at the apex node) and near a vent
+ * without radial tapes (its edge ring has at least 6 nodes). With radial
+ * tapes the gore rings reach the vent, narrowing with the gores. */
 typedef struct canopy_circular_spec {
     double diameter;       /* horizontal skirt diameter (flat: constructed) */
     double vent_diameter;  /* 0: no vent */

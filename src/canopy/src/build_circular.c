@@ -17,6 +17,7 @@ static const double TWO_PI = 6.283185307179586476925286766559;
 typedef struct surface {
     double R, rv, a;
     double cx, cy, z_apex;
+    int gores_to_vent;  /* a vent with radial tapes: gore rings reach it */
 } surface;
 
 /* Meridian arc length from the axis to radius r:
@@ -51,8 +52,8 @@ static double radius_at(const surface *sf, double s)
  * evenly, or, for an offset ring, sit half-way between the even positions
  * of a p-segment ring: gore fractions 0, 0.5/p, 1.5/p, ..., (p - 0.5)/p with
  * p = per_gore - 1 (straight seams, like the rectangle's sides). A free ring
- * (near the apex of a canopy without vent, where a ring holds fewer nodes
- * than attachments) has `count` evenly spaced nodes. Every ring starts at
+ * (where a ring holds fewer nodes than attachments, near the apex or a vent
+ * that no radial tapes reach) has `count` evenly spaced nodes. Every ring starts at
  * angle 0. */
 typedef struct ring {
     double s, r, z;  /* meridian arc length, radius, height */
@@ -133,16 +134,17 @@ static canopy_status validate(canopy_model *model,
 
 /* --- ring positions -------------------------------------------------------
  * Rings lie along the meridian arc at the height of an equilateral triangle,
- * g = (sqrt(3)/2) e, so a parabola gets even spacing. Next to a vent whose
- * gores are narrower than e (each gore then holds one segment of width
- * 2 pi r / n), the spacing follows the gore width, g = (sqrt(3)/2)
- * min(e, 2 pi r / n), so those triangles stay near-equilateral too. The
+ * g = (sqrt(3)/2) e, so a parabola gets even spacing. When the radial
+ * tapes run to a vent, the gore rings reach it; where its gores are
+ * narrower than e (each gore then holds one segment of width 2 pi r / n),
+ * the spacing follows the gore width, g = (sqrt(3)/2) min(e, 2 pi r / n),
+ * so those triangles stay near-equilateral too. The
  * gaps are g(s_k) lambda, lambda chosen so that an integer number of rings
  * lands exactly on the skirt. */
 static double ring_gap(const surface *sf, double s, double e, int n_att)
 {
     const double h = 0.5 * sqrt(3.0) * e;
-    if (!(sf->rv > 0.0)) return h;
+    if (!sf->gores_to_vent) return h;
     double w = TWO_PI * radius_at(sf, s) / n_att;
     if (w < 1e-6 * e) w = 1e-6 * e;   /* a vent of (almost) zero size */
     return w < e ? 0.5 * sqrt(3.0) * w : h;
@@ -163,7 +165,7 @@ static void place_rings(const surface *sf, double s0, double s1, double e,
 {
     rg[0].s = s0;
     rg[nr].s = s1;
-    if (!(sf->rv > 0.0)) {
+    if (!sf->gores_to_vent) {
         for (int k = 1; k < nr; ++k) rg[k].s = s0 + (s1 - s0) * k / nr;
         return;
     }
@@ -206,9 +208,9 @@ static int ring_intervals(const surface *sf, double s0, double s1, double e,
  * strips whenever a gore holds two or more segments. Candidates: a
  * gore ring with p - 1, p or p + 1 even segments per gore (p = round of the
  * natural count per gore), an offset ring on those p (p >= 2), and, without
- * a vent and once a ring holds fewer nodes than attachments, a free ring
- * (all rings inside a free ring are free) of a count that keeps the mesh
- * symmetric. The strip is evaluated exactly as
+ * tapes running to a vent and once a ring holds fewer nodes than
+ * attachments, a free ring (all rings inside a free ring are free) of a
+ * count that keeps the mesh symmetric; a vent's edge ring has at least 6. The strip is evaluated exactly as
  * it will be built (same points, same zipping rule). */
 
 typedef struct planner {
@@ -362,8 +364,11 @@ static int choose_ring(planner *pl, ring *rg, int i, int vent, double e_loc)
         if (n_att % d == 0) { f = d; break; }
     const double nq = f * floor(natural / f + 0.5);
     int n0 = (int)nq;
-    while (n0 < 3) n0 += f;
-    const int free_ok = !vent && (out->per_gore == 0 || n0 < n_att);
+    /* the vent's edge: at least a hexagon (83 % of the circle's area) */
+    const int n_min = (vent && i == 0) ? 6 : 3;
+    while (n0 < n_min) n0 += f;
+    const int free_ok = !pl->sf->gores_to_vent &&
+                        (out->per_gore == 0 || n0 < n_att);
     double apex[3] = {pl->sf->cx, pl->sf->cy, pl->sf->z_apex};
     const double *ap = (!vent && i == 1) ? apex : NULL;
 
@@ -391,7 +396,7 @@ static int choose_ring(planner *pl, ring *rg, int i, int vent, double e_loc)
     if (free_ok) {
         const int ns[3] = {n0, n0 - f, n0 + f};
         for (int k = 0; k < 3; ++k) {
-            if (ns[k] < 3) continue;
+            if (ns[k] < n_min) continue;
             cand[nc] = *c;
             cand[nc].per_gore = 0;
             cand[nc].offset = 0;
@@ -439,7 +444,7 @@ static canopy_status plan_rings(canopy_model *model,
      * a vent's narrow gores add (their spacing grows geometrically). */
     const double h = 0.5 * sqrt(3.0) * e;
     double rings_est = (s1 - s0) / h + 2.0;
-    if (vent) rings_est += n_att * log(1.0 + n_att * e / sf->rv);
+    if (sf->gores_to_vent) rings_est += n_att * log(1.0 + n_att * e / sf->rv);
     const double nodes_est =
         (s1 * s1 - s0 * s0) * 3.2 / (h * e) + rings_est * 2.0 * n_att;
     if (!(nodes_est <= CANOPY_BUILD_MAX_ITEMS))
@@ -605,6 +610,7 @@ canopy_status canopy_build_circular(canopy_model *model,
     sf.cx = spec->center[0];
     sf.cy = spec->center[1];
     sf.z_apex = spec->center[2] + sf.a * sf.rv * sf.rv;
+    sf.gores_to_vent = sf.rv > 0.0 && spec->radial_tapes;
 
     ring *rg = NULL;
     int nr = 0;
