@@ -53,8 +53,8 @@ static double radius_at(const surface *sf, double s)
  * of a p-segment ring: gore fractions 0, 0.5/p, 1.5/p, ..., (p - 0.5)/p with
  * p = per_gore - 1 (straight seams, like the rectangle's sides). A free ring
  * (where a ring holds fewer nodes than attachments, near the apex or a vent
- * that no radial tapes reach) has `count` evenly spaced nodes. Every ring starts at
- * angle 0. */
+ * that no radial tapes reach) has `count` evenly spaced nodes. Every ring
+ * starts at angle 0. */
 typedef struct ring {
     double s, r, z;  /* meridian arc length, radius, height */
     int count;       /* nodes in the ring */
@@ -210,8 +210,9 @@ static int ring_intervals(const surface *sf, double s0, double s1, double e,
  * natural count per gore), an offset ring on those p (p >= 2), and, without
  * tapes running to a vent and once a ring holds fewer nodes than
  * attachments, a free ring (all rings inside a free ring are free) of a
- * count that keeps the mesh symmetric; a vent's edge ring has at least 6. The strip is evaluated exactly as
- * it will be built (same points, same zipping rule). */
+ * count that keeps the mesh symmetric; a vent's edge ring has at least 6.
+ * The strip is evaluated exactly as it will be built (same points, same
+ * zipping rule). */
 
 typedef struct planner {
     const surface *sf;
