@@ -379,9 +379,20 @@ canopy_status canopy_model_set_implicit_controls(canopy_model *model,
  * triangles' size. Rigid motion and in-plane motion are not damped; the
  * out-of-plane flapping of single triangles, which the springs' dashpots
  * (along the springs) leave undamped, is. rate >= 0; default 0 (none).
- * The frequency bound includes it. */
+ * The frequency bound includes it unless it is implicit (below). */
 canopy_status canopy_model_set_bending_damping(canopy_model *model,
                                                double rate);
+/* implicit != 0: the hinge dashpots leave the force evaluation and act
+ * after every (sub-)step h of any integrator as the backward-Euler update
+ *   (M + h C) v' = M v,   C = sum over hinges of c u u^T at the new shape
+ * (Lie splitting, first order in h for the dashpots; solved by conjugate
+ * gradients). It only dissipates, keeps linear and angular momentum and is
+ * stable for any h, so the frequency bound leaves the hinges out: a large
+ * rate no longer shortens the stable step. Default 0 (explicit). The
+ * forces of canopy_model_get_forces include the dashpots either way. */
+canopy_status canopy_model_set_bending_damping_implicit(canopy_model *model,
+                                                        int implicit);
+int canopy_model_bending_damping_implicit(const canopy_model *model);
 
 /* Runaway detection: a step that leaves any node faster than this [m/s]
  * fails with CANOPY_ERR_DIVERGED (as does any NaN/Inf). Default 1e4;
@@ -394,7 +405,8 @@ canopy_status canopy_model_set_speed_limit(canopy_model *model, double vmax);
  *   omega_i^2 = 2 K_i / m_i,   rho_i = 2 C_i / m_i,
  *   Lambda_i  = rho_i / 2 + sqrt(rho_i^2 / 4 + omega_i^2),
  * where rho_i also holds node i's row sum of the hinge dashpots' damping
- * matrix over m_i (canopy_model_set_bending_damping; at the current shape),
+ * matrix over m_i (canopy_model_set_bending_damping; at the current shape;
+ * not when they are implicit),
  * and *omega = max_i Lambda_i over free nodes (rad/s). */
 canopy_status canopy_model_frequency_bound(canopy_model *model,
                                            double *omega);

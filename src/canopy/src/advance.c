@@ -19,7 +19,8 @@ canopy_status canopy_model_frequency_bound(canopy_model *model, double *omega)
         sum[3 * i] += s->k[k];     sum[3 * j] += s->k[k];
         sum[3 * i + 1] += s->c[k]; sum[3 * j + 1] += s->c[k];
     }
-    canopy_hinge_damping_sums(model, n->x, sum + 2, 3);
+    if (!model->bending_implicit)
+        canopy_hinge_damping_sums(model, n->x, sum + 2, 3);
     double lambda = 0.0;
     for (int i = 0; i < n->count; ++i) {
         if (n->fixed[i]) continue;
@@ -67,6 +68,11 @@ static canopy_status raw_step(canopy_model *model, double dt, int substep)
     canopy_status st = model->integrator->step(model, dt);
     if (st != CANOPY_OK) return st;
     if (!model->integrator->carries_acceleration) model->acc_valid = 0;
+    if (model->bending_implicit && model->hinges.count) {
+        st = canopy_hinge_damping_implicit_update(model, dt);
+        if (st != CANOPY_OK) return st;
+        model->acc_valid = 0; /* v changed after the step's acceleration */
+    }
     model->t += dt;
     double speed = 0.0;
     int bad = find_runaway(model, &speed);

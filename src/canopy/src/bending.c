@@ -44,7 +44,9 @@ canopy_status canopy_hinges_build(canopy_model *m)
 {
     canopy_hinges *h = &m->hinges;
     free(h->nodes);
+    free(h->modes);
     h->nodes = NULL;
+    h->modes = NULL;
     h->count = 0;
     const canopy_triangles *t = &m->tris;
     if (m->bending_damping == 0.0 || t->count == 0) return CANOPY_OK;
@@ -73,7 +75,12 @@ canopy_status canopy_hinges_build(canopy_model *m)
         if (compare_edges(edges + k, edges + k + 1) == 0) ++count;
     if (count > 0) {
         h->nodes = malloc(4 * sizeof(int) * (size_t)count);
-        if (h->nodes == NULL) {
+        h->modes = malloc(13 * sizeof(double) * (size_t)count);
+        if (h->nodes == NULL || h->modes == NULL) {
+            free(h->nodes);
+            free(h->modes);
+            h->nodes = NULL;
+            h->modes = NULL;
             free(edges);
             return canopy_fail(m, CANOPY_ERR_MEMORY,
                                "cannot allocate %d hinges", count);
@@ -93,7 +100,7 @@ canopy_status canopy_hinges_build(canopy_model *m)
 
 /* The bending modes u (4 x 3) and the dashpot c of hinge k at x; 0 for a
  * degenerate hinge (a triangle of zero area). */
-static int hinge_modes(const canopy_model *m, const double *x, int k,
+int canopy_hinge_modes(const canopy_model *m, const double *x, int k,
                        double u[4][3], double *c)
 {
     const int *hn = m->hinges.nodes + 4 * k;
@@ -148,7 +155,7 @@ static void apply_hinge_damping(const canopy_model *m, const double *x,
     const unsigned char *fixed = m->nodes.fixed;
     for (int k = 0; k < m->hinges.count; ++k) {
         double u[4][3], c;
-        if (!hinge_modes(m, x, k, u, &c)) continue;
+        if (!canopy_hinge_modes(m, x, k, u, &c)) continue;
         const int *hn = m->hinges.nodes + 4 * k;
         double rate = 0.0;
         for (int a = 0; a < 4; ++a) {
@@ -184,7 +191,7 @@ void canopy_hinge_damping_sums(const canopy_model *m, const double *x,
      * the free nodes j (fixed nodes do not move: no row, no column) */
     for (int k = 0; k < m->hinges.count; ++k) {
         double u[4][3], c;
-        if (!hinge_modes(m, x, k, u, &c)) continue;
+        if (!canopy_hinge_modes(m, x, k, u, &c)) continue;
         const int *hn = m->hinges.nodes + 4 * k;
         double norm[4], total = 0.0;
         for (int a = 0; a < 4; ++a) {

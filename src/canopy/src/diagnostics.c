@@ -124,6 +124,8 @@ canopy_status canopy_model_get_forces(canopy_model *model, double *f, int n)
     const canopy_status st = canopy_model_prepare(model); /* the hinges */
     if (st != CANOPY_OK) return st;
     canopy_forces(model, model->nodes.x, model->nodes.v, f);
+    if (model->bending_implicit && model->hinges.count)
+        canopy_hinge_forces(model, model->nodes.x, model->nodes.v, f);
     return CANOPY_OK;
 }
 

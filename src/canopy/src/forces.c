@@ -83,7 +83,8 @@ void canopy_forces(const canopy_model *m, const double *x, const double *v,
         f[3 * i + 2] = mi * g[2] + fe[3 * i + 2];
     }
     spring_forces(m, x, v, f);
-    if (m->hinges.count) canopy_hinge_forces(m, x, v, f);
+    if (m->hinges.count && !m->bending_implicit)
+        canopy_hinge_forces(m, x, v, f);
     pressure_forces(m, x, f);
 }
 

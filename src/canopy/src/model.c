@@ -133,7 +133,7 @@ void canopy_model_destroy(canopy_model **model)
     free(m->springs.k); free(m->springs.c); free(m->springs.law);
     free(m->springs.group);
     free(m->tris.nodes); free(m->tris.dp);
-    free(m->hinges.nodes);
+    free(m->hinges.nodes); free(m->hinges.modes);
     canopy_state_free(&m->checkpoint);
     canopy_state_free(&m->rollback);
     free_work(m);
@@ -775,6 +775,20 @@ canopy_status canopy_model_set_bending_damping(canopy_model *model,
     return CANOPY_OK;
 }
 
+canopy_status canopy_model_set_bending_damping_implicit(canopy_model *model,
+                                                        int implicit)
+{
+    NULL_MODEL_CHECK(model);
+    model->bending_implicit = implicit ? 1 : 0;
+    canopy_clear_message(model);
+    return CANOPY_OK;
+}
+
+int canopy_model_bending_damping_implicit(const canopy_model *model)
+{
+    return model ? model->bending_implicit : 0;
+}
+
 canopy_status canopy_model_set_speed_limit(canopy_model *model, double vmax)
 {
     NULL_MODEL_CHECK(model);
@@ -795,7 +809,7 @@ size_t canopy_model_memory_bytes(const canopy_model *model)
     b += (size_t)model->springs.capacity *
          (2 * sizeof(int) + 6 * sizeof(double) + 2);
     b += (size_t)model->tris.capacity * (3 * sizeof(int) + sizeof(double));
-    b += 4 * sizeof(int) * (size_t)model->hinges.count;
+    b += (4 * sizeof(int) + 13 * sizeof(double)) * (size_t)model->hinges.count;
     b += model->work_bytes;
     b += 9 * sizeof(double) * (size_t)model->checkpoint.count;
     b += 9 * sizeof(double) * (size_t)model->rollback.count;

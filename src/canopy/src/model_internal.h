@@ -47,6 +47,9 @@ typedef struct canopy_triangles {
 typedef struct canopy_hinges {
     int count;
     int *nodes;         /* 4*count: opposite o1, opposite o2, edge p, edge q */
+    double *modes;      /* 13*count: bending modes u (4 x 3) and dashpot c at
+                           one shape, cached by the implicit update
+                           (bending_implicit.c) */
 } canopy_hinges;
 
 /* Saved state for checkpoint/restore and for failed-step rollback. */
@@ -64,6 +67,8 @@ struct canopy_model {
     canopy_triangles tris;
     canopy_hinges hinges;
     double bending_damping; /* decay rate of a hinge's bending [1/s] (bending.c) */
+    int bending_implicit;   /* hinge dashpots as a backward-Euler velocity
+                               update after each step (bending_implicit.c) */
 
     double t;
     int acc_valid;      /* nodes.acc holds the last HHT step's acceleration */
@@ -128,6 +133,14 @@ void canopy_hinge_tangent_damping(const canopy_model *model, const double *x,
                                   const double *w, double *y);
 void canopy_hinge_damping_sums(const canopy_model *model, const double *x,
                                double *sum, int stride);
+/* Bending modes u (4 x 3) and dashpot c of hinge k at x; returns 0 (and
+ * leaves u, c unset) for a degenerate hinge. */
+int canopy_hinge_modes(const canopy_model *model, const double *x, int k,
+                       double u[4][3], double *c);
+/* With bending_implicit: v <- (M + h C)^-1 M v at the current positions
+ * (bending_implicit.c); CANOPY_ERR_DIVERGED if the solve fails. */
+canopy_status canopy_hinge_damping_implicit_update(canopy_model *model,
+                                                   double h);
 /* Accelerations (3*n): forces over effective mass; zero at fixed nodes. */
 void canopy_accelerations(const canopy_model *model, const double *x,
                           const double *v, double *a);

@@ -76,5 +76,5 @@ void canopy_tangent_damping(const canopy_model *m, const double *x,
             if (!fixed[j]) y[3 * j + d] -= w;
         }
     }
-    canopy_hinge_tangent_damping(m, x, u, y);
+    if (!m->bending_implicit) canopy_hinge_tangent_damping(m, x, u, y);
 }

@@ -633,6 +633,7 @@ void Foam::canopyStructure::build(const vector& defaultGravity)
     scalar alpha = 0;
     scalar beta = 0;
     scalar bendingDamping = 0;
+    word bendingDampingScheme("explicit");
     if (const dictionary* d = top.optionalDict("fabric"))
     {
         const entryReader fr(*d, "fabric");
@@ -640,6 +641,11 @@ void Foam::canopyStructure::build(const vector& defaultGravity)
         bendingDamping = fr.nonNegative
         (
             "bendingDamping", "decay rate of each hinge's bending [1/s]", 0
+        );
+        bendingDampingScheme = fr.select
+        (
+            "bendingDampingScheme", wordList{"explicit", "implicit"},
+            "hinge dashpot scheme", bendingDampingScheme
         );
         if (const dictionary* pd = fr.optionalDict("porosity"))
         {
@@ -653,7 +659,7 @@ void Foam::canopyStructure::build(const vector& defaultGravity)
             wordList
             {
                 "arealDensity", "stiffness", "tensileStiffness", "damping",
-                "bendingDamping", "law", "porosity"
+                "bendingDamping", "bendingDampingScheme", "law", "porosity"
             },
             ""
         );
@@ -956,6 +962,14 @@ void Foam::canopyStructure::build(const vector& defaultGravity)
     (
         canopy_model_set_bending_damping(m, bendingDamping),
         FUNCTION_NAME, "canopy_model_set_bending_damping"
+    );
+    check
+    (
+        canopy_model_set_bending_damping_implicit
+        (
+            m, bendingDampingScheme == "implicit"
+        ),
+        FUNCTION_NAME, "canopy_model_set_bending_damping_implicit"
     );
     check
     (

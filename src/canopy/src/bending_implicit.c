@@ -1,0 +1,167 @@
+/* bending_implicit.c — the hinge dashpots as a backward-Euler velocity update after each step, so that they do not limit the stable step. */
+#include "model_internal.h"
+
+#include <math.h>
+
+/* Lie splitting: the integrator advances everything but the hinge dashpots
+ * over h; then, at the new positions,
+ *   (M + h C) v' = M v,   C = sum over hinges of c u u^T (bending.c),
+ * backward Euler on M dv/dt = -C v. C is symmetric positive semi-definite
+ * with rigid motion in its null space, so the update only dissipates
+ * (v'.M v' <= v.M v), keeps linear and angular momentum (1^T C = 0) and is
+ * stable for any h. Fixed nodes keep their velocity; it enters the free
+ * nodes' right-hand side. Solved for the increment d = v' - v:
+ *   (M_ff + h C_ff) d = -h (C v)_f
+ * by conjugate gradients with the diagonal as preconditioner. M is block
+ * diagonal: m I, plus m_a I or, for a directional added mass along the
+ * unit vector e, m_a e e^T. */
+
+/* Cache each hinge's modes and dashpot at x (c = 0: a degenerate hinge). */
+static void cache_modes(canopy_model *m, const double *x)
+{
+    for (int k = 0; k < m->hinges.count; ++k) {
+        double *cache = m->hinges.modes + 13 * k;
+        double u[4][3], c;
+        if (!canopy_hinge_modes(m, x, k, u, &c)) {
+            for (int j = 0; j < 13; ++j) cache[j] = 0.0;
+            continue;
+        }
+        for (int a = 0; a < 4; ++a)
+            for (int d = 0; d < 3; ++d) cache[3 * a + d] = u[a][d];
+        cache[12] = c;
+    }
+}
+
+/* y += scale C w with the cached modes; with free_only, fixed nodes' w
+ * count as zero and their rows are left alone. */
+static void add_cached_damping(const canopy_model *m, const double *w,
+                               double *y, double scale, int free_only)
+{
+    const unsigned char *fixed = m->nodes.fixed;
+    for (int k = 0; k < m->hinges.count; ++k) {
+        const double *u = m->hinges.modes + 13 * k;
+        if (u[12] == 0.0) continue;
+        const int *hn = m->hinges.nodes + 4 * k;
+        double rate = 0.0;
+        for (int a = 0; a < 4; ++a) {
+            if (free_only && fixed[hn[a]]) continue;
+            const double *wa = w + 3 * hn[a];
+            rate += u[3 * a] * wa[0] + u[3 * a + 1] * wa[1] +
+                    u[3 * a + 2] * wa[2];
+        }
+        const double s = scale * u[12] * rate;
+        for (int a = 0; a < 4; ++a) {
+            if (free_only && fixed[hn[a]]) continue;
+            double *ya = y + 3 * hn[a];
+            ya[0] += s * u[3 * a];
+            ya[1] += s * u[3 * a + 1];
+            ya[2] += s * u[3 * a + 2];
+        }
+    }
+}
+
+/* y = M w on free nodes (0 on fixed nodes). */
+static void apply_mass(const canopy_model *m, const double *w, double *y)
+{
+    const canopy_nodes *n = &m->nodes;
+    for (int i = 0; i < n->count; ++i) {
+        double *yi = y + 3 * i;
+        const double *wi = w + 3 * i;
+        if (n->fixed[i]) {
+            yi[0] = yi[1] = yi[2] = 0.0;
+            continue;
+        }
+        const double ma = n->added_mass[i];
+        if (canopy_added_mass_directional(m, i)) {
+            const double *e = n->added_dir + 3 * i;
+            const double s = ma * (e[0] * wi[0] + e[1] * wi[1] + e[2] * wi[2]);
+            for (int d = 0; d < 3; ++d)
+                yi[d] = n->mass[i] * wi[d] + s * e[d];
+        } else {
+            for (int d = 0; d < 3; ++d) yi[d] = (n->mass[i] + ma) * wi[d];
+        }
+    }
+}
+
+/* The diagonal of M_ff + h C_ff (1 on fixed nodes' rows). */
+static void diagonal(const canopy_model *m, double h, double *diag)
+{
+    const canopy_nodes *n = &m->nodes;
+    for (int i = 0; i < n->count; ++i) {
+        const double ma = n->added_mass[i];
+        const int directional = canopy_added_mass_directional(m, i);
+        const double *e = n->added_dir + 3 * i;
+        for (int d = 0; d < 3; ++d)
+            diag[3 * i + d] = n->fixed[i] ? 1.0
+                            : n->mass[i] + (directional ? ma * e[d] * e[d] : ma);
+    }
+    for (int k = 0; k < m->hinges.count; ++k) {
+        const double *u = m->hinges.modes + 13 * k;
+        const int *hn = m->hinges.nodes + 4 * k;
+        for (int a = 0; a < 4; ++a) {
+            if (n->fixed[hn[a]]) continue;
+            for (int d = 0; d < 3; ++d)
+                diag[3 * hn[a] + d] += h * u[12] * u[3 * a + d] * u[3 * a + d];
+        }
+    }
+}
+
+static double dot(int N, const double *a, const double *b)
+{
+    double s = 0.0;
+    for (int k = 0; k < N; ++k) s += a[k] * b[k];
+    return s;
+}
+
+canopy_status canopy_hinge_damping_implicit_update(canopy_model *m, double h)
+{
+    const int N = 3 * m->nodes.count;
+    double *v = m->nodes.v;
+    double *inc = m->work[10], *r = m->work[11], *z = m->work[12],
+           *p = m->work[13], *Ap = m->work[14], *diag = m->work[15];
+    cache_modes(m, m->nodes.x);
+
+    /* r = b = -h (C v) on free rows; fixed rows stay 0 throughout */
+    for (int k = 0; k < N; ++k) r[k] = 0.0;
+    add_cached_damping(m, v, r, -h, 0);
+    for (int i = 0; i < m->nodes.count; ++i)
+        if (m->nodes.fixed[i]) r[3 * i] = r[3 * i + 1] = r[3 * i + 2] = 0.0;
+    const double b_norm = sqrt(dot(N, r, r));
+    if (b_norm == 0.0) return CANOPY_OK;
+
+    diagonal(m, h, diag);
+    for (int k = 0; k < N; ++k) {
+        inc[k] = 0.0;
+        z[k] = r[k] / diag[k];
+        p[k] = z[k];
+    }
+    double rz = dot(N, r, z);
+    const double tol = 1e-10 * b_norm;
+    const int max_it = N < 2000 ? N + 20 : 2000 + N / 10;
+    double r_norm = b_norm;
+    for (int it = 1; it <= max_it; ++it) {
+        apply_mass(m, p, Ap);
+        add_cached_damping(m, p, Ap, h, 1);
+        const double pAp = dot(N, p, Ap);
+        if (!(pAp > 0.0)) break;
+        const double alpha = rz / pAp;
+        for (int k = 0; k < N; ++k) {
+            inc[k] += alpha * p[k];
+            r[k] -= alpha * Ap[k];
+        }
+        r_norm = sqrt(dot(N, r, r));
+        if (r_norm <= tol) {
+            for (int k = 0; k < N; ++k) v[k] += inc[k];
+            return CANOPY_OK;
+        }
+        for (int k = 0; k < N; ++k) z[k] = r[k] / diag[k];
+        const double rz_new = dot(N, r, z);
+        const double beta = rz_new / rz;
+        rz = rz_new;
+        for (int k = 0; k < N; ++k) p[k] = z[k] + beta * p[k];
+    }
+    return canopy_fail(m, CANOPY_ERR_DIVERGED,
+                       "implicit bending damping (step %g): conjugate "
+                       "gradients stopped at a residual of %g of the "
+                       "right-hand side", h, r_norm / b_norm);
+}
