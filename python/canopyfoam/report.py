@@ -356,19 +356,30 @@ def descent_speed(velocity, gravity):
     return np.asarray(velocity, dtype=float) @ (g / np.linalg.norm(g))
 
 
-def steady_interval(t, run_start, fraction=None, start=None):
+def steady_interval(t, run_start, fraction=None, start=None, stop=None):
     """(t0, t1, description) of the steady interval.
 
-    start: an explicit start time (clipped to the data); otherwise the last
-    `fraction` (default 1/3) of [run_start, t[-1]]. Raises ReportError when
-    the interval holds fewer than MIN_STEADY_SAMPLES samples.
+    stop: an explicit end time (clipped to the data; default the last
+    time). start: an explicit start time (clipped to the data); otherwise
+    the last `fraction` (default 1/3) of [run_start, end]. Raises
+    ReportError when the interval holds fewer than MIN_STEADY_SAMPLES
+    samples.
     """
     t = np.asarray(t, dtype=float)
     end = float(t[-1])
+    stop_note = ""
+    if stop is not None:
+        if stop <= float(t[0]):
+            raise ReportError("--steady-end %g is not after the first time "
+                              "%g" % (stop, float(t[0])))
+        if stop < end:
+            end = float(stop)
+            stop_note = ", to --steady-end %g" % stop
     if start is not None:
         if start >= end:
-            raise ReportError("--steady-start %g is not before the last time "
-                              "%g" % (start, end))
+            raise ReportError("--steady-start %g is not before the %s %g"
+                              % (start, "--steady-end" if stop_note
+                                 else "last time", end))
         t0 = max(float(start), float(t[0]))
         how = "from --steady-start %g" % start
         if t0 > start:
@@ -381,7 +392,8 @@ def steady_interval(t, run_start, fraction=None, start=None):
         t0 = max(end - f * (end - run_start), float(t[0]))
         how = ("last 1/3 of the run (default)" if fraction is None
                else "last %.3g of the run (--steady-fraction)" % f)
-    n = int(np.count_nonzero(t >= t0 - 1e-12 * max(1.0, abs(t0))))
+    how += stop_note
+    n = int(np.count_nonzero(interval_mask(t, t0, end)))
     if n < MIN_STEADY_SAMPLES:
         raise ReportError("the steady interval t = %g .. %g holds %d samples; "
                           "need at least %d (a longer run, or an earlier "
@@ -504,7 +516,8 @@ def drag_coefficients(speed, drag_force, mass, gravity, rho, diameter):
 
 
 def analyse(case_dir, fraction=None, steady_start=None, diameter=None,
-            mass=None, rho=None, gravity=None, reference=None, series=None):
+            mass=None, rho=None, gravity=None, reference=None, series=None,
+            steady_end=None):
     """The whole report as a JSON-ready dict (plus '_series' and
     '_breathing' for plotting, which write_outputs leaves out)."""
     case_dir = os.path.abspath(case_dir)
@@ -520,17 +533,20 @@ def analyse(case_dir, fraction=None, steady_start=None, diameter=None,
     t = series.t
     if len(t) < 2:
         raise ReportError("only %d time step in the data" % len(t))
-    V = descent_speed(series.columns("payload_Ux", "payload_Uy",
-                                     "payload_Uz"), g)
+    U = series.columns("payload_Ux", "payload_Uy", "payload_Uz")
+    V = descent_speed(U, g)
+    # the payload's speed across gravity: a swing or a glide
+    H = np.linalg.norm(np.asarray(U, dtype=float) - np.outer(V, ghat), axis=1)
     drag = -series.columns("force_x", "force_y", "force_z") @ ghat
     D = series.column("projected_diameter")
     iterations = series.column("coupling_iterations")
 
     t0, t1, how = steady_interval(t, series.start_time, fraction,
-                                  steady_start)
+                                  steady_start, steady_end)
     m = interval_mask(t, t0, t1)
     ts = t[m]
     v_stats = time_statistics(ts, V[m])
+    h_stats = time_statistics(ts, H[m])
     d_stats = time_statistics(ts, D[m])
     f_stats = time_statistics(ts, drag[m])
     b = breathing(ts, D[m])
@@ -564,6 +580,7 @@ def analyse(case_dir, fraction=None, steady_start=None, diameter=None,
                    "duration": float(t1 - t0), "samples": int(len(ts)),
                    "method": how, "warning": steady_warning},
         "descentVelocity": v_stats,
+        "horizontalVelocity": h_stats,
         "projectedDiameter": d_stats,
         "pressureForceAgainstGravity": f_stats,
         "breathing": {k: v for k, v in b.items() if not k.startswith("_")},
@@ -677,6 +694,9 @@ def format_summary(r):
     if ref and _reference_descent(ref, v["mean"]):
         add("     ref %-5s %s" % (ref["name"],
                                   _reference_descent(ref, v["mean"])))
+    h = r["horizontalVelocity"]
+    add("  horizontal   %.3g m/s  max %.3g  (the payload's speed across "
+        "gravity: a swing or glide)" % (h["mean"], h["max"]))
     add("  diameter     %.4g m = %.3f D0  std %.3g  min %.4g  max %.4g"
         % (d["mean"], d["mean"] / D0, d["std"], d["min"], d["max"]))
     if b["resolved"]:
@@ -855,6 +875,9 @@ def parse_args(argv):
                              "run (default 1/3)")
     steady.add_argument("--steady-start", type=float, metavar="T",
                         help="steady interval = [T, end]")
+    p.add_argument("--steady-end", type=float, metavar="T",
+                   help="end the steady interval at T (default: the last "
+                        "time), e.g. before a late swing")
     p.add_argument("--diameter", type=float, metavar="D0",
                    help="nominal diameter [m] (else '# nominalDiameter')")
     p.add_argument("--mass", type=float, metavar="M",
@@ -879,6 +902,7 @@ def main(argv=None):
             raise ReportError("no case directory %s" % args.case)
         report = analyse(args.case, fraction=args.steady_fraction,
                          steady_start=args.steady_start,
+                         steady_end=args.steady_end,
                          diameter=args.diameter, mass=args.mass,
                          rho=args.rho, gravity=args.gravity,
                          reference=args.reference)

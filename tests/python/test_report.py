@@ -10,6 +10,7 @@ The synthetic run (dt = 0.01 s, 0 .. 12 s, gravity (0 0 -9.81)):
                  Dinf = 1.5 m, aD = 0.04 m, f = 2 Hz
   force          F_z = 0.9 W (1 + 0.02 sin(2 pi fV t)), W = 6.02 kg * 9.81
   iterations     3, 4, 5, 6, 3, 4, ... (mean 4.5)
+  swing          U_x = aH sin(2 pi fH t), aH = 0.3 m/s, fH = 0.25 Hz
 written as a run restarted twice, in folders 0 (to t = 13), 4 (4.01 .. 10.5)
 and 10 (10.01 .. 12): rows 4.01 .. 13 of folder 0 and 10.01 .. 10.5 of
 folder 4 hold wrong values (V + 100, 100 iterations) that the later folders
@@ -50,6 +51,7 @@ VT, TAU, AV, FV, PHIV = 4.0, 0.5, 0.05, 2.0, 0.7
 DINF, AD, F_BREATH, PHID = 1.5, 0.04, 2.0, 0.3
 D0, MASS, RHO, G = 2.134, 6.02, 1.2, 9.81
 FORCE_SHARE = 0.9
+AH, FH = 0.3, 0.25               # swing: horizontal payload velocity along x
 
 
 def check(name, ok, detail):
@@ -80,6 +82,7 @@ def row(t, ghat, f_breath=F_BREATH, corrupt=False, step=0, frame=False):
         V += 100.0
         iterations = 100
     v = [V * c for c in ghat]                 # velocity along gravity
+    v[0] += AH * math.sin(2 * math.pi * FH * t)   # across it (ghat.x = 0)
     x = [-0.5 * V * t * c for c in ghat]      # not analysed
     force = [-drag * c for c in ghat]         # against gravity
     values = ([t] + x + v + force
@@ -168,6 +171,13 @@ def test_restarts_and_statistics(tmp):
     check("restart truncated line", r["skippedLines"] == 1,
           "%d bad line(s) skipped (expected the 1 cut short)"
           % r["skippedLines"])
+
+    # The swing across gravity: one full period (4 s) in 8 .. 12, so the
+    # mean of |AH sin| is 2 AH / pi (trapezoid weights on 401 samples:
+    # ~1e-5 relative); the peaks at t = 9, 11 s are samples
+    h = r["horizontalVelocity"]
+    close("horizontal speed mean", h["mean"], 2 * AH / math.pi, 1e-4, "m/s")
+    close("horizontal speed max", h["max"], AH, 1e-12, "m/s")
 
     # The steady interval: last third of 0 .. 12
     s = r["steady"]
@@ -370,6 +380,22 @@ def test_command_line(tmp, case, expected):
     mean_exact = VT - VT * TAU * (math.exp(-6 / TAU) - math.exp(-12 / TAU)) / 6
     close("--steady-start terminal velocity", r["descentVelocity"]["mean"],
           mean_exact, 1e-6, "m/s")
+    # --steady-start 6 --steady-end 9: 301 samples, the exact mean over them
+    r = report.analyse(case, steady_start=6.0, steady_end=9.0)
+    s = r["steady"]
+    check("--steady-end", abs(s["start"] - 6) < 1e-9 and abs(s["end"] - 9)
+          < 1e-9 and s["samples"] == 301,
+          "t = %.10g .. %.10g, %d samples (expected 6 .. 9, 301)"
+          % (s["start"], s["end"], s["samples"]))
+    mean_exact = VT - VT * TAU * (math.exp(-6 / TAU) - math.exp(-9 / TAU)) / 3
+    close("--steady-end terminal velocity", r["descentVelocity"]["mean"],
+          mean_exact, 1e-6, "m/s")
+    try:
+        report.analyse(case, steady_start=6.0, steady_end=5.0)
+        check("--steady-end before --steady-start is refused", False, "")
+    except report.ReportError as e:
+        check("--steady-end before --steady-start is refused",
+              "--steady-end" in str(e), str(e))
 
 
 def test_references(tmp, case):
