@@ -1,5 +1,6 @@
 /* test_bending_damping.c — the hinge dashpots: the dihedral-angle force against finite differences, no force on rigid motion, dissipation, the stable step. */
 #include "test.h"
+#include "test_flapping_sheet_fixture.h"
 
 static double dot3(const double *a, const double *b)
 {
@@ -144,29 +145,7 @@ CANOPY_TEST(bending_damping_damps_flapping_within_the_stable_step)
     double energy_left[2], step[2];
     for (int pass = 0; pass < 2; ++pass) {
         canopy_model *m = NULL;
-        ASSERT_OK(m, canopy_model_create(&m));
-        canopy_rectangle_spec r = canopy_rectangle_spec_default();
-        r.width = 1.0;
-        r.length = 1.0;
-        r.edge_length = 0.1;
-        ASSERT_OK(m, canopy_build_rectangle(m, &r));
-        const double g[3] = {0.0, 0.0, 0.0};
-        ASSERT_OK(m, canopy_model_set_gravity(m, g));
-        ASSERT_OK(m, canopy_model_set_bending_damping(m, pass ? 1e4 : 0.0));
-        const int n = canopy_model_node_count(m);
-        double *x = malloc(sizeof(double) * 3 * (size_t)n);
-        double *v = calloc(3 * (size_t)n, sizeof(double));
-        ASSERT_OK(m, canopy_model_get_positions(m, x, n));
-        for (int i = 0; i < n; ++i) {
-            const double px = x[3 * i], py = x[3 * i + 1];
-            if (px < 1e-9 || py < 1e-9 || px > r.width - 1e-9 ||
-                py > r.length - 1e-9) {
-                ASSERT_OK(m, canopy_model_set_fixed(m, i, 1));
-                continue;
-            }
-            v[3 * i + 2] = (i % 2) ? 0.1 : -0.1;
-        }
-        ASSERT_OK(m, canopy_model_set_velocities(m, v, n));
+        ASSERT_OK(m, flapping_sheet(&m, pass ? 1e4 : 0.0, 0));
         canopy_energies e0, e1;
         ASSERT_OK(m, canopy_model_energies(m, &e0));
         ASSERT_OK(m, canopy_model_stable_step(m, &step[pass]));
@@ -175,8 +154,6 @@ CANOPY_TEST(bending_damping_damps_flapping_within_the_stable_step)
         energy_left[pass] = (e1.kinetic + e1.spring) / (e0.kinetic + e0.spring);
         printf("  rate %g /s: stable step %.3g s, energy after 0.01 s %.3g of the start\n",
                pass ? 1e4 : 0.0, step[pass], energy_left[pass]);
-        free(x);
-        free(v);
         canopy_model_destroy(&m);
     }
     ASSERT_TRUE(energy_left[0] > 0.9);

@@ -1,5 +1,6 @@
 /* test_bending_implicit.c — the implicit hinge dashpots: momentum kept, energy lost, no shorter stable step, first-order agreement with the explicit dashpots. */
 #include "test.h"
+#include "test_flapping_sheet_fixture.h"
 
 /* A flat 4 x 4 grid of nodes 0.3 m apart, split into triangles, with no
  * springs and no gravity: between the integrator's free flight and the
@@ -128,48 +129,12 @@ CANOPY_TEST(bending_damping_implicit_keeps_momentum_and_dissipates)
     canopy_model_destroy(&m);
 }
 
-/* The pinned flapping sheet of test_bending_damping.c (1 m, edge 0.1 m, the
- * default fabric) with rate 1e4 /s. Implicit, the dashpots leave the
- * frequency bound: the stable step is the one without them, and RK4 at
- * that step stays
- * stable and still takes the energy below 1e-3 of the start in 0.01 s.
+/* The pinned flapping sheet (test_flapping_sheet_fixture.h) with rate
+ * 1e4 /s. Implicit, the dashpots leave the frequency bound: the stable
+ * step is the one without them, and RK4 at that step stays stable and
+ * still takes the energy below 1e-3 of the start in 0.01 s.
  * (The explicit dashpots' step is 7.5x shorter: rate 1e4 /s over the
  * Gershgorin sum of the sheet's hinges.) */
-static canopy_status flapping_sheet(canopy_model **out, double rate,
-                                    int implicit)
-{
-    canopy_status st = canopy_model_create(out);
-    if (st) return st;
-    canopy_model *m = *out;
-    canopy_rectangle_spec r = canopy_rectangle_spec_default();
-    r.width = 1.0;
-    r.length = 1.0;
-    r.edge_length = 0.1;
-    const double g[3] = {0.0, 0.0, 0.0};
-    if ((st = canopy_build_rectangle(m, &r))) return st;
-    if ((st = canopy_model_set_gravity(m, g))) return st;
-    if ((st = canopy_model_set_bending_damping(m, rate))) return st;
-    if ((st = canopy_model_set_bending_damping_implicit(m, implicit))) return st;
-    const int n = canopy_model_node_count(m);
-    double *x = malloc(sizeof(double) * 3 * (size_t)n);
-    double *v = calloc(3 * (size_t)n, sizeof(double));
-    if (x == NULL || v == NULL) st = CANOPY_ERR_MEMORY;
-    if (st == CANOPY_OK) st = canopy_model_get_positions(m, x, n);
-    for (int i = 0; i < n && st == CANOPY_OK; ++i) {
-        const double px = x[3 * i], py = x[3 * i + 1];
-        if (px < 1e-9 || py < 1e-9 || px > r.width - 1e-9 ||
-            py > r.length - 1e-9) {
-            st = canopy_model_set_fixed(m, i, 1);
-            continue;
-        }
-        v[3 * i + 2] = (i % 2) ? 0.1 : -0.1;
-    }
-    if (st == CANOPY_OK) st = canopy_model_set_velocities(m, v, n);
-    free(x);
-    free(v);
-    return st;
-}
-
 CANOPY_TEST(bending_damping_implicit_keeps_the_stable_step)
 {
     double step[3], energy_left = 0.0;

@@ -146,29 +146,35 @@ int canopy_hinge_modes(const canopy_model *m, const double *x, int k,
     return 1;
 }
 
-/* y += sign C w, C = sum over hinges of c u u^T; with free_only, fixed
- * nodes' w count as zero and their rows are left alone. */
+void canopy_hinge_apply(const canopy_model *m, int k, const double u[4][3],
+                        double c, const double *w, double *y, double scale,
+                        int free_only)
+{
+    const unsigned char *fixed = m->nodes.fixed;
+    const int *hn = m->hinges.nodes + 4 * k;
+    double rate = 0.0;
+    for (int a = 0; a < 4; ++a) {
+        if (free_only && fixed[hn[a]]) continue;
+        const double *wa = w + 3 * hn[a];
+        rate += u[a][0] * wa[0] + u[a][1] * wa[1] + u[a][2] * wa[2];
+    }
+    const double s = scale * c * rate;
+    for (int a = 0; a < 4; ++a) {
+        if (free_only && fixed[hn[a]]) continue;
+        double *ya = y + 3 * hn[a];
+        ya[0] += s * u[a][0]; ya[1] += s * u[a][1]; ya[2] += s * u[a][2];
+    }
+}
+
+/* y += sign C w over every hinge, its modes at x */
 static void apply_hinge_damping(const canopy_model *m, const double *x,
                                 const double *w, double *y, double sign,
                                 int free_only)
 {
-    const unsigned char *fixed = m->nodes.fixed;
     for (int k = 0; k < m->hinges.count; ++k) {
         double u[4][3], c;
-        if (!canopy_hinge_modes(m, x, k, u, &c)) continue;
-        const int *hn = m->hinges.nodes + 4 * k;
-        double rate = 0.0;
-        for (int a = 0; a < 4; ++a) {
-            if (free_only && fixed[hn[a]]) continue;
-            const double *wa = w + 3 * hn[a];
-            rate += u[a][0] * wa[0] + u[a][1] * wa[1] + u[a][2] * wa[2];
-        }
-        const double s = sign * c * rate;
-        for (int a = 0; a < 4; ++a) {
-            if (free_only && fixed[hn[a]]) continue;
-            double *ya = y + 3 * hn[a];
-            ya[0] += s * u[a][0]; ya[1] += s * u[a][1]; ya[2] += s * u[a][2];
-        }
+        if (canopy_hinge_modes(m, x, k, u, &c))
+            canopy_hinge_apply(m, k, u, c, w, y, sign, free_only);
     }
 }
 

@@ -16,47 +16,26 @@
  * diagonal: m I, plus m_a I or, for a directional added mass along the
  * unit vector e, m_a e e^T. */
 
-/* Cache each hinge's modes and dashpot at x (c = 0: a degenerate hinge). */
+/* Cache each hinge's modes u (12 doubles, u[4][3]) and dashpot c at x
+ * (c = 0: a degenerate hinge). */
 static void cache_modes(canopy_model *m, const double *x)
 {
     for (int k = 0; k < m->hinges.count; ++k) {
         double *cache = m->hinges.modes + 13 * k;
-        double u[4][3], c;
-        if (!canopy_hinge_modes(m, x, k, u, &c)) {
-            for (int j = 0; j < 13; ++j) cache[j] = 0.0;
-            continue;
-        }
-        for (int a = 0; a < 4; ++a)
-            for (int d = 0; d < 3; ++d) cache[3 * a + d] = u[a][d];
-        cache[12] = c;
+        if (!canopy_hinge_modes(m, x, k, (double (*)[3])cache, cache + 12))
+            cache[12] = 0.0;
     }
 }
 
-/* y += scale C w with the cached modes; with free_only, fixed nodes' w
- * count as zero and their rows are left alone. */
+/* y += scale C w with the cached modes (canopy_hinge_apply) */
 static void add_cached_damping(const canopy_model *m, const double *w,
                                double *y, double scale, int free_only)
 {
-    const unsigned char *fixed = m->nodes.fixed;
     for (int k = 0; k < m->hinges.count; ++k) {
-        const double *u = m->hinges.modes + 13 * k;
-        if (u[12] == 0.0) continue;
-        const int *hn = m->hinges.nodes + 4 * k;
-        double rate = 0.0;
-        for (int a = 0; a < 4; ++a) {
-            if (free_only && fixed[hn[a]]) continue;
-            const double *wa = w + 3 * hn[a];
-            rate += u[3 * a] * wa[0] + u[3 * a + 1] * wa[1] +
-                    u[3 * a + 2] * wa[2];
-        }
-        const double s = scale * u[12] * rate;
-        for (int a = 0; a < 4; ++a) {
-            if (free_only && fixed[hn[a]]) continue;
-            double *ya = y + 3 * hn[a];
-            ya[0] += s * u[3 * a];
-            ya[1] += s * u[3 * a + 1];
-            ya[2] += s * u[3 * a + 2];
-        }
+        const double *cache = m->hinges.modes + 13 * k;
+        if (cache[12] != 0.0)
+            canopy_hinge_apply(m, k, (const double (*)[3])cache, cache[12], w,
+                               y, scale, free_only);
     }
 }
 
@@ -97,6 +76,7 @@ static void diagonal(const canopy_model *m, double h, double *diag)
     }
     for (int k = 0; k < m->hinges.count; ++k) {
         const double *u = m->hinges.modes + 13 * k;
+        if (u[12] == 0.0) continue; /* degenerate: u not set */
         const int *hn = m->hinges.nodes + 4 * k;
         for (int a = 0; a < 4; ++a) {
             if (n->fixed[hn[a]]) continue;

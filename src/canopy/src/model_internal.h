@@ -137,6 +137,11 @@ void canopy_hinge_damping_sums(const canopy_model *model, const double *x,
  * leaves u, c unset) for a degenerate hinge. */
 int canopy_hinge_modes(const canopy_model *model, const double *x, int k,
                        double u[4][3], double *c);
+/* y += scale c (u.w) u for hinge k with modes u and dashpot c; with
+ * free_only, fixed nodes' w count as zero and their rows are left alone. */
+void canopy_hinge_apply(const canopy_model *model, int k, const double u[4][3],
+                        double c, const double *w, double *y, double scale,
+                        int free_only);
 /* With bending_implicit: v <- (M + h C)^-1 M v at the current positions
  * (bending_implicit.c); CANOPY_ERR_DIVERGED if the solve fails. */
 canopy_status canopy_hinge_damping_implicit_update(canopy_model *model,
