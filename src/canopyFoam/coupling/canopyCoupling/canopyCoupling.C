@@ -10,6 +10,7 @@
 #include "switchToken.H"
 #include "treeDataCell.H"
 #include "indexedOctree.H"
+#include "pressureFaceGradient.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -463,6 +464,7 @@ Foam::canopyCoupling::canopyCoupling
     markerForce_(Zero),
     pressureForce_(Zero),
     slip_(0),
+    needsNonOrthCorrection_(meshNeedsNonOrthCorrection(mesh)),
     stopIfNotConverged_(true),
     restartFluid_(false),
     ibForceLoad_(false),
@@ -932,6 +934,15 @@ Foam::tmp<Foam::volVectorField> Foam::canopyCoupling::reconstruct
 
     tfield.ref().correctBoundaryConditions();
     return tfield;
+}
+
+
+Foam::tmp<Foam::surfaceScalarField> Foam::canopyCoupling::faceGradient
+(
+    const volScalarField& p
+) const
+{
+    return pressureFaceGradient(p, needsNonOrthCorrection_);
 }
 
 

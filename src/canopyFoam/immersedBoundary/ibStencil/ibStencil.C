@@ -26,6 +26,35 @@ namespace
 typedef Foam::indexedOctree<Foam::treeDataCell> cellTreeType;
 typedef Foam::indexedOctree<Foam::treeDataPoint> pointTreeType;
 
+// mesh.pointInCell(p, celli) (tet decomposition), after the cheap test
+// that p lies in the bounding box of the cell's points (a cell lies in its
+// box: the same answer, without the tets for the cells p is not near)
+bool pointInCellFast
+(
+    const Foam::polyMesh& mesh,
+    const Foam::point& p,
+    const Foam::label celli
+)
+{
+    const Foam::pointField& pts = mesh.points();
+    const Foam::labelList& cellPts = mesh.cellPoints()[celli];
+    Foam::point lo(pts[cellPts[0]]);
+    Foam::point hi(lo);
+    for (const Foam::label pointi : cellPts)
+    {
+        lo = Foam::min(lo, pts[pointi]);
+        hi = Foam::max(hi, pts[pointi]);
+    }
+    for (Foam::direction d = 0; d < Foam::vector::nComponents; ++d)
+    {
+        if (p[d] < lo[d] || p[d] > hi[d])
+        {
+            return false;
+        }
+    }
+    return mesh.pointInCell(p, celli);
+}
+
 // Append to cells, once each, the shapes (cell centres) of the point tree
 // inside box, searching the subtree of node nodei (whose box overlaps box).
 // The traversal of indexedOctree::findBox, without its per-query hash set.
@@ -196,22 +225,34 @@ void Foam::ibStencil::calcSpacing(const pointField& points)
 
         forAll(points, m)
         {
-            // The marker's cell of the previous update first (markers move
-            // little between updates), then the tree if the point is in
-            // its box (in parallel most points are not)
-            label celli = markerCell_[m];
-            if
-            (
-                celli < 0 || celli >= nCells
-             || !mesh_.pointInCell(points[m], celli)
-            )
+            // The marker's cell of the previous update first, then its face
+            // neighbours (markers move less than a cell between updates),
+            // then the tree if the point is in its box (in parallel most
+            // points are not)
+            const label hint = markerCell_[m];
+            label celli = -1;
+            if (hint >= 0 && hint < nCells)
             {
-                celli = -1;
-                if (treeBb.contains(points[m]))
+                if (pointInCellFast(mesh_, points[m], hint))
                 {
-                    const label shapei = tree.findInside(points[m]);
-                    celli = (shapei < 0 ? -1 : shapeCells[shapei]);
+                    celli = hint;
                 }
+                else
+                {
+                    for (const label nbr : mesh_.cellCells()[hint])
+                    {
+                        if (pointInCellFast(mesh_, points[m], nbr))
+                        {
+                            celli = nbr;
+                            break;
+                        }
+                    }
+                }
+            }
+            if (celli < 0 && treeBb.contains(points[m]))
+            {
+                const label shapei = tree.findInside(points[m]);
+                celli = (shapei < 0 ? -1 : shapeCells[shapei]);
             }
             markerCell_[m] = celli;
             owner_[m] = (celli < 0 ? nProcs : myProc);

@@ -1,0 +1,47 @@
+/*---------------------------------------------------------------------------*\
+    canopyFoam: pressureFaceGradient.C — snGrad(p)|Sf| without the
+    non-orthogonal correction's gradient on orthogonal meshes.
+\*---------------------------------------------------------------------------*/
+
+#include "pressureFaceGradient.H"
+#include "snGradScheme.H"
+
+bool Foam::meshNeedsNonOrthCorrection(const fvMesh& mesh)
+{
+    const surfaceVectorField& k = mesh.nonOrthCorrectionVectors();
+    scalar largest = k.primitiveField().size() ? max(mag(k.primitiveField())) : 0;
+    for (const fvsPatchVectorField& kp : k.boundaryField())
+    {
+        if (kp.size())
+        {
+            largest = max(largest, max(mag(kp)));
+        }
+    }
+    reduce(largest, maxOp<scalar>());
+    return largest > orthogonalityTolerance;
+}
+
+
+Foam::tmp<Foam::surfaceScalarField> Foam::pressureFaceGradient
+(
+    const volScalarField& p,
+    const bool needsNonOrthCorrection
+)
+{
+    const fvMesh& mesh = p.mesh();
+    const word name("snGrad(" + p.name() + ')');
+    tmp<fv::snGradScheme<scalar>> scheme
+    (
+        fv::snGradScheme<scalar>::New(mesh, mesh.snGradScheme(name))
+    );
+
+    // snGradScheme::snGrad(p) is this uncorrected part plus, for a
+    // corrected scheme, correction(p)
+    tmp<surfaceScalarField> tsnGrad =
+    (
+        needsNonOrthCorrection || !scheme().corrected()
+      ? scheme().snGrad(p)
+      : fv::snGradScheme<scalar>::snGrad(p, scheme().deltaCoeffs(p), "snGrad")
+    );
+    return tsnGrad*mesh.magSf();
+}
