@@ -123,16 +123,7 @@ int main(int argc, char *argv[])
     // What the shortcut may drop: k.(grad p)_f |S_f| with |k| at most the
     // mesh's largest correction vector (below orthogonalityTolerance when
     // it is taken), plus round-off of the sums
-    const surfaceVectorField& k = mesh.nonOrthCorrectionVectors();
-    scalar largestK = gMax(mag(k.primitiveField())());
-    for (const fvsPatchVectorField& kp : k.boundaryField())
-    {
-        if (kp.size())
-        {
-            largestK = max(largestK, max(mag(kp)));
-        }
-    }
-    reduce(largestK, maxOp<scalar>());
+    const scalar largestK = largestNonOrthCorrection(mesh);
     const scalar bound =
         (needs ? 0 : largestK*gMax(mag(fvc::grad(p))())*gMax(mesh.magSf()))
       + 4*SMALL*scale;

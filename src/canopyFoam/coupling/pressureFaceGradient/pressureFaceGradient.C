@@ -6,7 +6,7 @@
 #include "pressureFaceGradient.H"
 #include "snGradScheme.H"
 
-bool Foam::meshNeedsNonOrthCorrection(const fvMesh& mesh)
+Foam::scalar Foam::largestNonOrthCorrection(const fvMesh& mesh)
 {
     const surfaceVectorField& k = mesh.nonOrthCorrectionVectors();
     scalar largest = k.primitiveField().size() ? max(mag(k.primitiveField())) : 0;
@@ -18,7 +18,13 @@ bool Foam::meshNeedsNonOrthCorrection(const fvMesh& mesh)
         }
     }
     reduce(largest, maxOp<scalar>());
-    return largest > orthogonalityTolerance;
+    return largest;
+}
+
+
+bool Foam::meshNeedsNonOrthCorrection(const fvMesh& mesh)
+{
+    return largestNonOrthCorrection(mesh) > orthogonalityTolerance;
 }
 
 
