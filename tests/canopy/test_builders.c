@@ -549,6 +549,70 @@ static void check_cross(int n_att)
     canopy_model_destroy(&m);
 }
 
+/* Node at (x, y) within tol, or -1. */
+static int node_at(const snapshot *s, double x, double y, double tol)
+{
+    for (int i = 0; i < s->n; ++i)
+        if (fabs(s->x[3 * i] - x) <= tol && fabs(s->x[3 * i + 1] - y) <= tol)
+            return i;
+    return -1;
+}
+
+/* A quarter turn about the centre maps the cross's nodes onto nodes and its
+ * springs onto springs (every arm meshed alike, so no pair of opposite arms
+ * folds more easily than the other), and the attachments of one tip onto
+ * those of the next. */
+static void check_cross_symmetry(int n_att, double edge)
+{
+    canopy_model *m = NULL;
+    ASSERT_OK(m, canopy_model_create(&m));
+    canopy_cross_spec c = canopy_cross_spec_default();
+    c.n_attachments = n_att;
+    c.edge_length = edge;
+    c.center[0] = 0.25; c.center[1] = 0.5;
+    int att[64];
+    ASSERT_OK(m, canopy_build_cross(m, &c, att));
+    snapshot s;
+    ASSERT_TRUE(snapshot_take(m, &s));
+    const double tol = 1e-9 * c.span;
+    int *turned = malloc((size_t)s.n * sizeof *turned + 1);
+    ASSERT_TRUE(turned != NULL);
+    int unmatched = 0;
+    for (int i = 0; i < s.n; ++i) {
+        const double dx = s.x[3 * i] - c.center[0];
+        const double dy = s.x[3 * i + 1] - c.center[1];
+        turned[i] = node_at(&s, c.center[0] - dy, c.center[1] + dx, tol);
+        if (turned[i] < 0) ++unmatched;
+    }
+    ASSERT_TRUE(unmatched == 0);
+    if (unmatched == 0) {
+        int missing = 0;
+        for (int k = 0; k < s.ns; ++k) {
+            const int a = turned[s.ends[2 * k]], b = turned[s.ends[2 * k + 1]];
+            int found = 0;
+            for (int l = 0; l < s.ns && !found; ++l)
+                found = (s.ends[2 * l] == a && s.ends[2 * l + 1] == b) ||
+                        (s.ends[2 * l] == b && s.ends[2 * l + 1] == a);
+            if (!found) ++missing;
+        }
+        ASSERT_TRUE(missing == 0);
+        const int per = n_att / 4;
+        for (int k = 0; k < n_att; ++k)
+            ASSERT_TRUE(turned[att[k]] == att[(k + per) % n_att]);
+    }
+    free(turned);
+    snapshot_free(&s);
+    canopy_model_destroy(&m);
+}
+
+CANOPY_TEST(builders_cross_quarter_turn)
+{
+    check_cross_symmetry(20, 0.05);
+    check_cross_symmetry(20, 0.15);   /* the cross tutorial's resolution */
+    check_cross_symmetry(16, 0.05);   /* 4 per tip: 3 intervals, doubled */
+    check_cross_symmetry(4, 0.1);
+}
+
 CANOPY_TEST(builders_cross)
 {
     check_cross(20);   /* seed 000 Table 5.2: 20 lines */

@@ -335,3 +335,38 @@ canopy_status canopy_fabric_zip(canopy_fabric_builder *fb, const int *lower,
     }
     return CANOPY_OK;
 }
+
+
+/* Spacing count of a length at the target edge: round(len / e) >= 1. */
+int canopy_build_spacings(double len, double e)
+{
+    const double q = floor(len / e + 0.5);
+    return q < 1.0 ? 1 : (int)q;
+}
+
+/* Row spacings of a band of thickness T for node spacing s: the fewest rows
+ * with spacing <= (sqrt(3)/2) s (the relative slack keeps an exact fit). */
+int canopy_build_row_spacings(double T, double s)
+{
+    const double q = ceil(T / (0.5 * sqrt(3.0) * s) * (1.0 - 1e-12));
+    return q < 1.0 ? 1 : (int)q;
+}
+
+/* Checks shared by the flat builders: edge length finite and > 0, the
+ * placement point finite, the fabric material valid. */
+canopy_status canopy_build_check_flat(canopy_model *model, const char *who,
+                                      double edge, const double point[3],
+                                      const char *point_name,
+                                      const canopy_material *fabric)
+{
+    if (!isfinite(edge) || !(edge > 0.0))
+        return canopy_fail(model, CANOPY_ERR_ARGUMENT,
+                           "%s: spec.edge_length %g must be finite and > 0",
+                           who, edge);
+    if (!canopy_build_finite3(point))
+        return canopy_fail(model, CANOPY_ERR_ARGUMENT,
+                           "%s: spec.%s (%g, %g, %g) is not finite", who,
+                           point_name, point[0], point[1], point[2]);
+    return canopy_build_check_material(model, who, "spec.fabric", fabric);
+}
+

@@ -102,4 +102,15 @@ int canopy_zip_step(const double *xyz, const int *lower, int nl,
 canopy_status canopy_fabric_zip(canopy_fabric_builder *fb, const int *lower,
                                 int nl, const int *upper, int nu);
 
+/* Flat builders (rectangle, cross): spacings of a length at the target edge
+ * e, round(len / e) >= 1; row spacings of a band of thickness T for node
+ * spacing s, the fewest with spacing <= (sqrt(3)/2) s; the checks they share
+ * (edge length finite and > 0, the placement point `point_name` finite, the
+ * fabric a valid sheet material). */
+int canopy_build_spacings(double len, double e);
+int canopy_build_row_spacings(double T, double s);
+canopy_status canopy_build_check_flat(canopy_model *model, const char *who,
+                                      double edge, const double point[3],
+                                      const char *point_name,
+                                      const canopy_material *fabric);
 #endif /* CANOPY_BUILD_INTERNAL_H */

@@ -1,4 +1,4 @@
-/* build_rectangle.c — canopy_build_rectangle and canopy_build_cross: near-equilateral triangulation of a flat rectilinear union of rectangles by staggered rows. */
+/* build_rectangle.c — canopy_build_rectangle: near-equilateral triangulation of a flat rectilinear union of rectangles by staggered rows. */
 #include "build_internal.h"
 
 #include <math.h>
@@ -187,37 +187,6 @@ static canopy_status lattice_build(canopy_model *model, const lattice *L,
     return st;
 }
 
-/* Spacing count of a length at the target edge: round(len / e) >= 1. */
-static int spacings(double len, double e)
-{
-    const double q = floor(len / e + 0.5);
-    return q < 1.0 ? 1 : (int)q;
-}
-
-/* Row spacings of a band of thickness T for node spacing s: the fewest rows
- * with spacing <= (sqrt(3)/2) s (the relative slack keeps an exact fit). */
-static int row_spacings(double T, double s)
-{
-    const double q = ceil(T / (0.5 * sqrt(3.0) * s) * (1.0 - 1e-12));
-    return q < 1.0 ? 1 : (int)q;
-}
-
-static canopy_status check_common(canopy_model *model, const char *who,
-                                  double edge, const double point[3],
-                                  const char *point_name,
-                                  const canopy_material *fabric)
-{
-    if (!isfinite(edge) || !(edge > 0.0))
-        return canopy_fail(model, CANOPY_ERR_ARGUMENT,
-                           "%s: spec.edge_length %g must be finite and > 0",
-                           who, edge);
-    if (!canopy_build_finite3(point))
-        return canopy_fail(model, CANOPY_ERR_ARGUMENT,
-                           "%s: spec.%s (%g, %g, %g) is not finite", who,
-                           point_name, point[0], point[1], point[2]);
-    return canopy_build_check_material(model, who, "spec.fabric", fabric);
-}
-
 canopy_status canopy_build_rectangle(canopy_model *model,
                                      const canopy_rectangle_spec *spec)
 {
@@ -233,7 +202,7 @@ canopy_status canopy_build_rectangle(canopy_model *model,
         return canopy_fail(model, CANOPY_ERR_ARGUMENT,
                            "%s: spec.length %g must be finite and > 0", who,
                            spec->length);
-    canopy_status st = check_common(model, who, spec->edge_length,
+    canopy_status st = canopy_build_check_flat(model, who, spec->edge_length,
                                     spec->origin, "origin", &spec->fabric);
     if (st != CANOPY_OK) return st;
     const double e = spec->edge_length;
@@ -244,108 +213,11 @@ canopy_status canopy_build_rectangle(canopy_model *model,
                            who, e, spec->width, spec->length);
     const double X[2] = {spec->origin[0], spec->origin[0] + spec->width};
     const double Y[2] = {spec->origin[1], spec->origin[1] + spec->length};
-    const int nx = spacings(spec->width, e);
-    const int ny = row_spacings(spec->length, spec->width / nx);
+    const int nx = canopy_build_spacings(spec->width, e);
+    const int ny = canopy_build_row_spacings(spec->length, spec->width / nx);
     const unsigned char cov = 1;
     const lattice L = {1, 1, X, Y, &nx, &ny, &cov, spec->origin[2]};
     st = lattice_build(model, &L, &spec->fabric, who, e);
     if (st == CANOPY_OK) canopy_clear_message(model);
     return st;
-}
-
-/* Node created since `first` at (x, y) (within tol), or -1. */
-static int find_node(const canopy_model *model, int first, double x, double y,
-                     double tol)
-{
-    for (int i = first; i < model->nodes.count; ++i) {
-        const double *p = model->nodes.x + 3 * i;
-        if (fabs(p[0] - x) <= tol && fabs(p[1] - y) <= tol) return i;
-    }
-    return -1;
-}
-
-static int lcm2(int q) { return q % 2 == 0 ? q : 2 * q; }
-
-canopy_status canopy_build_cross(canopy_model *model,
-                                 const canopy_cross_spec *spec,
-                                 int *attach_out)
-{
-    static const char who[] = "build_cross";
-    if (model == NULL) return CANOPY_ERR_ARGUMENT;
-    if (spec == NULL)
-        return canopy_fail(model, CANOPY_ERR_ARGUMENT, "%s: spec is NULL", who);
-    if (!isfinite(spec->span) || !(spec->span > 0.0))
-        return canopy_fail(model, CANOPY_ERR_ARGUMENT,
-                           "%s: spec.span %g must be finite and > 0", who,
-                           spec->span);
-    if (!isfinite(spec->arm_width) || !(spec->arm_width > 0.0))
-        return canopy_fail(model, CANOPY_ERR_ARGUMENT,
-                           "%s: spec.arm_width %g must be finite and > 0", who,
-                           spec->arm_width);
-    if (!(spec->arm_width < spec->span))
-        return canopy_fail(model, CANOPY_ERR_ARGUMENT,
-                           "%s: spec.arm_width %g must be smaller than "
-                           "spec.span %g", who, spec->arm_width, spec->span);
-    if (spec->n_attachments < 4 || spec->n_attachments % 4 != 0)
-        return canopy_fail(model, CANOPY_ERR_ARGUMENT,
-                           "%s: spec.n_attachments %d must be a positive "
-                           "multiple of 4", who, spec->n_attachments);
-    canopy_status st = check_common(model, who, spec->edge_length,
-                                    spec->center, "center", &spec->fabric);
-    if (st != CANOPY_OK) return st;
-    const double e = spec->edge_length, S = spec->span, w = spec->arm_width;
-    const int m = spec->n_attachments / 4;   /* per arm tip */
-    if (!(S / e <= CANOPY_BUILD_MAX_ITEMS && m <= CANOPY_BUILD_MAX_ITEMS / 4))
-        return canopy_fail(model, CANOPY_ERR_ARGUMENT,
-                           "%s: spec.edge_length %g (or spec.n_attachments %d) "
-                           "is out of proportion to spec.span %g", who, e,
-                           spec->n_attachments, S);
-    const double cx = spec->center[0], cy = spec->center[1];
-    const double X[4] = {cx - 0.5 * S, cx - 0.5 * w, cx + 0.5 * w, cx + 0.5 * S};
-    const double Y[4] = {cy - 0.5 * S, cy - 0.5 * w, cy + 0.5 * w, cy + 0.5 * S};
-    /* Attachments along a tip of width w, corners included: m - 1 equal
-     * intervals (m = 1: the middle of the tip, 2 intervals). Tip nodes must
-     * fall on them: the centre segment's spacings and the middle band's rows
-     * are multiples of q; the middle band's rows also even, so that the total
-     * row count is even and both outer tip rows are unshifted rows. */
-    const int q = m >= 2 ? m - 1 : 2;
-    const double arm = 0.5 * (S - w);
-    int nc = q * spacings(w / q, e);
-    int na = spacings(arm, e);
-    const int nx[3] = {na, nc, na};
-    const double s_min = fmin(w / nc, arm / na);
-    const int qq = lcm2(q);
-    const double h0 = 0.5 * sqrt(3.0) * s_min;
-    int nm = qq * spacings(w / qq, h0);
-    if (w / nm > 1.1 * h0) nm += qq;          /* keep rows <= ~ h0 apart */
-    const int nt = row_spacings(arm, s_min);
-    const int ny[3] = {nt, nm, nt};
-    static const unsigned char cov[9] = {0, 1, 0, 1, 1, 1, 0, 1, 0};
-    const lattice L = {3, 3, X, Y, nx, ny, cov, spec->center[2]};
-    const int first = model->nodes.count;
-    st = lattice_build(model, &L, &spec->fabric, who, e);
-    if (st != CANOPY_OK) return st;
-
-    /* Attachments counter-clockwise from the +x tip: +x tip (y rising), +y
-     * tip (x falling), -x tip (y falling), -y tip (x rising). */
-    if (attach_out) {
-        const double tol = 1e-9 * S;
-        int k = 0;
-        for (int tip = 0; tip < 4; ++tip) {
-            for (int t = 0; t < m; ++t) {
-                const double f = m >= 2 ? (double)t / (m - 1) : 0.5;
-                const double u = -0.5 * w + w * f;      /* along the tip */
-                double x, y;
-                switch (tip) {
-                case 0: x = X[3]; y = cy + u; break;
-                case 1: x = cx - u; y = Y[3]; break;
-                case 2: x = X[0]; y = cy - u; break;
-                default: x = cx + u; y = Y[0]; break;
-                }
-                attach_out[k++] = find_node(model, first, x, y, tol);
-            }
-        }
-    }
-    canopy_clear_message(model);
-    return CANOPY_OK;
 }

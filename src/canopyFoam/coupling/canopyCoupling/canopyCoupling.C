@@ -314,6 +314,24 @@ void Foam::canopyCoupling::readFrame(const dictionary& dict)
 }
 
 
+Foam::scalar Foam::canopyCoupling::residualNorm
+(
+    const scalarField& change
+) const
+{
+    if (change.empty())
+    {
+        return 0;
+    }
+    if (!rmsResidual_)
+    {
+        return max(mag(change));
+    }
+    const scalarField areas(structure_.triangleAreas());
+    return Foam::sqrt(sum(areas*sqr(change))/max(sum(areas), VSMALL));
+}
+
+
 Foam::tmp<Foam::scalarField>
 Foam::canopyCoupling::interfaceNormalVelocities() const
 {
@@ -437,6 +455,7 @@ Foam::canopyCoupling::canopyCoupling
     pressureOffset_(3),
     tolerance_(1e-3),
     Uref_(1),
+    rmsResidual_(false),
     acceleration_(),
     lineDrag_(),
     UName_("U"),
@@ -510,6 +529,9 @@ Foam::canopyCoupling::canopyCoupling
     pressureOffset_ = dict.getOrDefault<scalar>("pressureOffset", 3);
     tolerance_ = dict.getOrDefault<scalar>("tolerance", 1e-3);
     Uref_ = dict.getOrDefault<scalar>("Uref", 1);
+    rmsResidual_ =
+        readChoice(dict, "residualNorm", "coupling.residualNorm", {"max", "rms"})
+     == "rms";
     stopIfNotConverged_ = readSwitch(dict, "stopIfNotConverged", true);
     restartFluid_ = readSwitch(dict, "restartFluid", false);
     ibForceLoad_ =
@@ -1051,7 +1073,9 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
     }
     if (scheme_ == scheme::strong)
     {
-        residual_ = acceleration_->relax(normalVelocity_, target)/scale;
+        const scalar change = residualNorm(target - normalVelocity_);
+        acceleration_->relax(normalVelocity_, target);
+        residual_ = change/scale;
         converged_ = residual_ < tolerance_;
         stop = converged_;
     }
@@ -1059,7 +1083,7 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
     {
         // Explicit: one structure solve per step; the PIMPLE outer loop
         // runs its own course
-        residual_ = (nt ? max(mag(target - normalVelocity_)) : 0)/scale;
+        residual_ = residualNorm(target - normalVelocity_)/scale;
         normalVelocity_ = target;
         converged_ = true;
     }
