@@ -122,19 +122,19 @@ RUNS = [
         edits=[(PROPS, "payload/mass", "600")], reference="T10",
         steady_start=5, steady_end=10),
     Run("G11-flat", G11, "flat start", reference="G11third"),
-    Run("G11-folded", G11_FOLDED, "folded start (tutorial's fold)",
+    Run("G11-folded", G11_FOLDED, "folded start (tutorial's fold: 2 m lift, 94 %)",
         reference="G11third"),
-    Run("G11-folded-deep", G11_FOLDED, "folded start, twice the lift",
+    Run("G11-folded-deep", G11_FOLDED, "folded start, twice the lift (4 m, 69 %)",
         edits=[("system/canopyFoldDict", "duration", "DOUBLE")],
         reference="G11third"),
 ]
 RUNS += [
     Run("cross-flat", "parachutes/cross", "flat start"),
     # the steady interval ends before the sideways swing that grows from
-    # ~2.8 s (the crossFolded README)
+    # ~3.5 s (the crossFolded README)
     Run("cross-folded", "parachutes/crossFolded",
-        "folded start (59 % of the flat projected diameter)",
-        steady_start=1.5, steady_end=2.8),
+        "folded start (51 % of the flat projected diameter)",
+        steady_start=1.5, steady_end=3.5),
 ]
 RUN_BY_ID = {r.ident: r for r in RUNS}
 
