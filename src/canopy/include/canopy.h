@@ -231,7 +231,11 @@ canopy_status canopy_build_circular(canopy_model *model,
                                     int *attach_out);
 
 /* Flat cross canopy: two crossed rectangles of length `span` and width
- * `arm_width` in the plane z = center[2]; normal +z. */
+ * `arm_width` in the plane z = center[2]; normal +z. The mesh has the
+ * cross's quarter-turn symmetry (a square centre of right triangles, four
+ * arms alike with their node rows across them), so no pair of arms folds
+ * more easily than the other; edge_length is a target, the attachments on
+ * each tip may make the spacing across the arms finer. */
 typedef struct canopy_cross_spec {
     double span;
     double arm_width;
