@@ -41,6 +41,15 @@ static int side_node(int first, int nc, int arm, int t)
     }
 }
 
+/* First node of row r (1..nr) of arm k: the arms' rows follow the centre
+ * grid, arm after arm, row after row (even rows nc + 1 nodes, odd rows
+ * nc + 2; nr is even, so an arm has nr (nc + 1) + nr / 2 nodes). */
+static int row_node(int first, int nc, int nr, int k, int r)
+{
+    return first + (nc + 1) * (nc + 1) + k * (nr * (nc + 1) + nr / 2) +
+           (r - 1) * (nc + 1) + r / 2;
+}
+
 /* u of node t of a row: even rows at the nc + 1 grid points, odd rows at the
  * two sides and the nc midpoints between (nc + 2 nodes). */
 static double row_u(int odd, int nc, double w, int t)
@@ -71,13 +80,7 @@ static canopy_status cross_fill(canopy_model *model,
                                        NULL);
             if (st != CANOPY_OK) return st;
         }
-    /* Arm rows 1..nr, arm after arm */
-    const int per_arm_rows = nr;
-    int *row_first = malloc(4 * (size_t)per_arm_rows * sizeof *row_first);
-    if (row_first == NULL)
-        return canopy_fail(model, CANOPY_ERR_MEMORY,
-                           "build_cross: cannot allocate %d rows",
-                           4 * per_arm_rows);
+    /* Arm rows 1..nr, arm after arm (the order row_node counts) */
     for (int k = 0; k < 4; ++k) {
         const double ax = axis[k][0], ay = axis[k][1];
         const double cx = -ay, cy = ax;                  /* c = z x a */
@@ -88,14 +91,9 @@ static canopy_status cross_fill(canopy_model *model,
                 const double u = row_u(odd, nc, w, t);
                 const double x[3] = {o[0] + d * ax + u * cx,
                                      o[1] + d * ay + u * cy, o[2]};
-                int idx;
                 st = canopy_model_add_node(model, x, 0.0, CANOPY_GROUP_FABRIC,
-                                           &idx);
-                if (st != CANOPY_OK) {
-                    free(row_first);
-                    return st;
-                }
-                if (t == 0) row_first[k * per_arm_rows + r - 1] = idx;
+                                           NULL);
+                if (st != CANOPY_OK) return st;
             }
         }
     }
@@ -104,10 +102,7 @@ static canopy_status cross_fill(canopy_model *model,
     const double up[3] = {0.0, 0.0, 1.0};
     st = canopy_fabric_begin(&fb, model, &spec->fabric, CANOPY_GROUP_FABRIC,
                              up, 3 * (size_t)model->nodes.count);
-    if (st != CANOPY_OK) {
-        free(row_first);
-        return st;
-    }
+    if (st != CANOPY_OK) return st;
     /* Centre: the diagonal of each square points away from the centre */
     for (int j = 0; j < nc && st == CANOPY_OK; ++j)
         for (int i = 0; i < nc && st == CANOPY_OK; ++i) {
@@ -132,7 +127,7 @@ static canopy_status cross_fill(canopy_model *model,
         int nl = nc;
         for (int r = 1; r <= nr && st == CANOPY_OK; ++r) {
             const int nu = r % 2 ? nc + 1 : nc;
-            const int f = row_first[k * per_arm_rows + r - 1];
+            const int f = row_node(first, nc, nr, k, r);
             for (int t = 0; t <= nu; ++t) upper[t] = f + t;
             st = canopy_fabric_zip(&fb, lower, nl, upper, nu);
             for (int t = 0; t <= nu; ++t) lower[t] = upper[t];
@@ -146,13 +141,12 @@ static canopy_status cross_fill(canopy_model *model,
     if (st == CANOPY_OK && attach_out) {
         const int m = spec->n_attachments / 4;
         for (int k = 0; k < 4; ++k) {
-            const int tip = row_first[k * per_arm_rows + nr - 1];
+            const int tip = row_node(first, nc, nr, k, nr);
             for (int t = 0; t < m; ++t)
                 attach_out[k * m + t] =
                     tip + (m >= 2 ? t * nc / (m - 1) : nc / 2);
         }
     }
-    free(row_first);
     return st;
 }
 

@@ -26,7 +26,7 @@ void Foam::aitkenRelaxation::reset()
 }
 
 
-Foam::scalar Foam::aitkenRelaxation::relax
+void Foam::aitkenRelaxation::relax
 (
     scalarField& x,
     const scalarField& target
@@ -51,8 +51,6 @@ Foam::scalar Foam::aitkenRelaxation::relax
 
     x += omega_*r;
     previousResidual_ = r;
-
-    return r.size() ? max(mag(r)) : 0;
 }
 
 

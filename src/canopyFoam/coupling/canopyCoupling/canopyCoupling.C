@@ -1057,25 +1057,14 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
 
     const scalar scale = max(Uref_, nt ? max(mag(target)) : 0);
     bool stop = false;
-    // Where the interface velocity changes most (for the log)
-    label worst = -1;
-    {
-        scalar largest = -1;
-        forAll(target, t)
-        {
-            const scalar change = mag(target[t] - normalVelocity_[t]);
-            if (change > largest)
-            {
-                largest = change;
-                worst = t;
-            }
-        }
-    }
+    // This iteration's change of the interface velocity: its norm is the
+    // residual; where it is largest goes to the log
+    const scalarField change(target - normalVelocity_);
+    residual_ = residualNorm(change)/scale;
+    const label worst = findMax(scalarField(mag(change)));
     if (scheme_ == scheme::strong)
     {
-        const scalar change = residualNorm(target - normalVelocity_);
         acceleration_->relax(normalVelocity_, target);
-        residual_ = change/scale;
         converged_ = residual_ < tolerance_;
         stop = converged_;
     }
@@ -1083,7 +1072,6 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
     {
         // Explicit: one structure solve per step; the PIMPLE outer loop
         // runs its own course
-        residual_ = residualNorm(target - normalVelocity_)/scale;
         normalVelocity_ = target;
         converged_ = true;
     }

@@ -131,7 +131,7 @@ void Foam::interfaceQuasiNewton::reset()
 }
 
 
-Foam::scalar Foam::interfaceQuasiNewton::relax
+void Foam::interfaceQuasiNewton::relax
 (
     scalarField& x,
     const scalarField& target
@@ -166,13 +166,12 @@ Foam::scalar Foam::interfaceQuasiNewton::relax
         }
     }
 
-    const scalar residual = r.size() ? max(mag(r)) : 0;
     if (V.empty())
     {
         x += omega0_*r;
         columnsUsed_ = 0;
         columnsDropped_ = 0;
-        return residual;
+        return;
     }
 
     boolList keep;
@@ -185,7 +184,6 @@ Foam::scalar Foam::interfaceQuasiNewton::relax
             x += c[j]*W[j];
         }
     }
-    return residual;
 }
 
 
