@@ -418,13 +418,25 @@ def payload_scaling(runs_results):
     return lines
 
 
-def structure_studies():
-    """The libcanopy test output of the structure-alone studies."""
+NOT_BUILT = ["(build/canopy/bin/canopy-tests is not built: run "
+             "./Allwmake first)"]
+
+
+def canopy_tests_output(*names):
+    """The standard output of libcanopy's tests (all, or those named), or
+    None when they are not built."""
     exe = os.path.join(TOP, "build", "canopy", "bin", "canopy-tests")
     if not os.access(exe, os.X_OK):
-        return ["(build/canopy/bin/canopy-tests is not built: run "
-                "./Allwmake first)"]
-    out = subprocess.run([exe], capture_output=True, text=True).stdout
+        return None
+    return subprocess.run([exe, *names], capture_output=True,
+                          text=True).stdout
+
+
+def structure_studies():
+    """The libcanopy test output of the structure-alone studies."""
+    out = canopy_tests_output()
+    if out is None:
+        return NOT_BUILT
     keep, lines = False, []
     for line in out.splitlines():
         if line.startswith("Delta E / E0") or line.startswith("Model-I") \
@@ -441,12 +453,10 @@ def structure_studies():
 def hinge_damping_scale():
     """The libcanopy test output on how the hinge dashpots damp a smooth
     bending against the flapping of single triangles."""
-    exe = os.path.join(TOP, "build", "canopy", "bin", "canopy-tests")
-    test = "bending_damping_falls_as_the_fourth_power_of_the_scale"
-    if not os.access(exe, os.X_OK):
-        return ["(build/canopy/bin/canopy-tests is not built: run "
-                "./Allwmake first)"]
-    out = subprocess.run([exe, test], capture_output=True, text=True).stdout
+    out = canopy_tests_output(
+        "bending_damping_falls_as_the_fourth_power_of_the_scale")
+    if out is None:
+        return NOT_BUILT
     return [line.strip() for line in out.splitlines()
             if line.startswith("  ") or line.startswith("PASS") or
             line.startswith("FAIL")]

@@ -87,12 +87,12 @@ static void ring_point(const surface *sf, const ring *rg, int j, int n_att,
 static canopy_status validate(canopy_model *model,
                               const canopy_circular_spec *spec)
 {
+    canopy_status st;
     if (spec == NULL)
         return canopy_fail(model, CANOPY_ERR_ARGUMENT, WHO ": spec is NULL");
-    if (!isfinite(spec->diameter) || !(spec->diameter > 0.0))
-        return canopy_fail(model, CANOPY_ERR_ARGUMENT,
-                           WHO ": spec.diameter %g must be finite and > 0",
-                           spec->diameter);
+    if ((st = canopy_build_check_positive(model, WHO, "diameter",
+                                          spec->diameter)))
+        return st;
     if (!isfinite(spec->vent_diameter) || spec->vent_diameter < 0.0)
         return canopy_fail(model, CANOPY_ERR_ARGUMENT,
                            WHO ": spec.vent_diameter %g must be finite and "
@@ -106,10 +106,9 @@ static canopy_status validate(canopy_model *model,
         return canopy_fail(model, CANOPY_ERR_ARGUMENT,
                            WHO ": spec.height %g must be finite and >= 0",
                            spec->height);
-    if (!isfinite(spec->edge_length) || !(spec->edge_length > 0.0))
-        return canopy_fail(model, CANOPY_ERR_ARGUMENT,
-                           WHO ": spec.edge_length %g must be finite and > 0",
-                           spec->edge_length);
+    if ((st = canopy_build_check_positive(model, WHO, "edge_length",
+                                          spec->edge_length)))
+        return st;
     if (!canopy_build_finite3(spec->center))
         return canopy_fail(model, CANOPY_ERR_ARGUMENT,
                            WHO ": spec.center (%g, %g, %g) is not finite",
@@ -124,8 +123,7 @@ static canopy_status validate(canopy_model *model,
         return canopy_fail(model, CANOPY_ERR_ARGUMENT,
                            WHO ": spec.radial_tapes %d must be 0 or 1",
                            spec->radial_tapes);
-    canopy_status st = canopy_build_check_material(model, WHO, "spec.fabric",
-                                                   &spec->fabric);
+    st = canopy_build_check_material(model, WHO, "spec.fabric", &spec->fabric);
     if (st != CANOPY_OK) return st;
     if (spec->radial_tapes)
         st = canopy_build_check_material(model, WHO, "spec.tape", &spec->tape);

@@ -354,15 +354,23 @@ int canopy_build_row_spacings(double T, double s)
 
 /* Checks shared by the flat builders: edge length finite and > 0, the
  * placement point finite, the fabric material valid. */
+canopy_status canopy_build_check_positive(canopy_model *model, const char *who,
+                                          const char *name, double value)
+{
+    if (isfinite(value) && value > 0.0) return CANOPY_OK;
+    return canopy_fail(model, CANOPY_ERR_ARGUMENT,
+                       "%s: spec.%s %g must be finite and > 0", who, name,
+                       value);
+}
+
 canopy_status canopy_build_check_flat(canopy_model *model, const char *who,
                                       double edge, const double point[3],
                                       const char *point_name,
                                       const canopy_material *fabric)
 {
-    if (!isfinite(edge) || !(edge > 0.0))
-        return canopy_fail(model, CANOPY_ERR_ARGUMENT,
-                           "%s: spec.edge_length %g must be finite and > 0",
-                           who, edge);
+    canopy_status st = canopy_build_check_positive(model, who, "edge_length",
+                                                   edge);
+    if (st) return st;
     if (!canopy_build_finite3(point))
         return canopy_fail(model, CANOPY_ERR_ARGUMENT,
                            "%s: spec.%s (%g, %g, %g) is not finite", who,

@@ -155,17 +155,16 @@ canopy_status canopy_build_cross(canopy_model *model,
                                  int *attach_out)
 {
     static const char who[] = "build_cross";
+    canopy_status st;
     if (model == NULL) return CANOPY_ERR_ARGUMENT;
     if (spec == NULL)
         return canopy_fail(model, CANOPY_ERR_ARGUMENT, "%s: spec is NULL", who);
-    if (!isfinite(spec->span) || !(spec->span > 0.0))
-        return canopy_fail(model, CANOPY_ERR_ARGUMENT,
-                           "%s: spec.span %g must be finite and > 0", who,
-                           spec->span);
-    if (!isfinite(spec->arm_width) || !(spec->arm_width > 0.0))
-        return canopy_fail(model, CANOPY_ERR_ARGUMENT,
-                           "%s: spec.arm_width %g must be finite and > 0", who,
-                           spec->arm_width);
+    if ((st = canopy_build_check_positive(model, who, "span",
+                                          spec->span)))
+        return st;
+    if ((st = canopy_build_check_positive(model, who, "arm_width",
+                                          spec->arm_width)))
+        return st;
     if (!(spec->arm_width < spec->span))
         return canopy_fail(model, CANOPY_ERR_ARGUMENT,
                            "%s: spec.arm_width %g must be smaller than "
@@ -174,9 +173,8 @@ canopy_status canopy_build_cross(canopy_model *model,
         return canopy_fail(model, CANOPY_ERR_ARGUMENT,
                            "%s: spec.n_attachments %d must be a positive "
                            "multiple of 4", who, spec->n_attachments);
-    canopy_status st = canopy_build_check_flat(model, who, spec->edge_length,
-                                               spec->center, "center",
-                                               &spec->fabric);
+    st = canopy_build_check_flat(model, who, spec->edge_length, spec->center,
+                                 "center", &spec->fabric);
     if (st != CANOPY_OK) return st;
     const double e = spec->edge_length, S = spec->span, w = spec->arm_width;
     const int m = spec->n_attachments / 4;   /* per arm tip */

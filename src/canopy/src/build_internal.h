@@ -102,6 +102,11 @@ int canopy_zip_step(const double *xyz, const int *lower, int nl,
 canopy_status canopy_fabric_zip(canopy_fabric_builder *fb, const int *lower,
                                 int nl, const int *upper, int nu);
 
+/* CANOPY_OK when value is finite and > 0; else fails with
+ * "<who>: spec.<name> <value> must be finite and > 0". */
+canopy_status canopy_build_check_positive(canopy_model *model, const char *who,
+                                          const char *name, double value);
+
 /* Flat builders (rectangle, cross): spacings of a length at the target edge
  * e, round(len / e) >= 1; row spacings of a band of thickness T for node
  * spacing s, the fewest with spacing <= (sqrt(3)/2) s; the checks they share

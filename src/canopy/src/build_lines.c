@@ -138,6 +138,7 @@ canopy_status canopy_build_suspension_lines(canopy_model *model,
                                             int *payload_node_out)
 {
     static const char who[] = "build_suspension_lines";
+    canopy_status st;
     if (model == NULL) return CANOPY_ERR_ARGUMENT;
     if (attach == NULL)
         return canopy_fail(model, CANOPY_ERR_ARGUMENT, "%s: attach is NULL",
@@ -172,20 +173,17 @@ canopy_status canopy_build_suspension_lines(canopy_model *model,
                                "%s: attach[%d] and attach[%d] are both "
                                "node %d", who, other, dup, attach[dup]);
     }
-    if (!isfinite(spec->line_length) || !(spec->line_length > 0.0))
-        return canopy_fail(model, CANOPY_ERR_ARGUMENT,
-                           "%s: spec.line_length %g must be finite and > 0",
-                           who, spec->line_length);
-    if (!isfinite(spec->edge_length) || !(spec->edge_length > 0.0))
-        return canopy_fail(model, CANOPY_ERR_ARGUMENT,
-                           "%s: spec.edge_length %g must be finite and > 0",
-                           who, spec->edge_length);
+    if ((st = canopy_build_check_positive(model, who, "line_length",
+                                          spec->line_length)))
+        return st;
+    if ((st = canopy_build_check_positive(model, who, "edge_length",
+                                          spec->edge_length)))
+        return st;
     if (!isfinite(spec->payload_mass) || spec->payload_mass < 0.0)
         return canopy_fail(model, CANOPY_ERR_ARGUMENT,
                            "%s: spec.payload_mass %g must be finite and >= 0",
                            who, spec->payload_mass);
-    canopy_status st = canopy_build_check_material(model, who, "spec.line",
-                                                   &spec->line);
+    st = canopy_build_check_material(model, who, "spec.line", &spec->line);
     if (st != CANOPY_OK) return st;
 
     const double *X = model->nodes.x;

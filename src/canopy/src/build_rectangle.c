@@ -191,19 +191,18 @@ canopy_status canopy_build_rectangle(canopy_model *model,
                                      const canopy_rectangle_spec *spec)
 {
     static const char who[] = "build_rectangle";
+    canopy_status st;
     if (model == NULL) return CANOPY_ERR_ARGUMENT;
     if (spec == NULL)
         return canopy_fail(model, CANOPY_ERR_ARGUMENT, "%s: spec is NULL", who);
-    if (!isfinite(spec->width) || !(spec->width > 0.0))
-        return canopy_fail(model, CANOPY_ERR_ARGUMENT,
-                           "%s: spec.width %g must be finite and > 0", who,
-                           spec->width);
-    if (!isfinite(spec->length) || !(spec->length > 0.0))
-        return canopy_fail(model, CANOPY_ERR_ARGUMENT,
-                           "%s: spec.length %g must be finite and > 0", who,
-                           spec->length);
-    canopy_status st = canopy_build_check_flat(model, who, spec->edge_length,
-                                    spec->origin, "origin", &spec->fabric);
+    if ((st = canopy_build_check_positive(model, who, "width",
+                                          spec->width)))
+        return st;
+    if ((st = canopy_build_check_positive(model, who, "length",
+                                          spec->length)))
+        return st;
+    st = canopy_build_check_flat(model, who, spec->edge_length, spec->origin,
+                                 "origin", &spec->fabric);
     if (st != CANOPY_OK) return st;
     const double e = spec->edge_length;
     if (!(spec->width / e <= CANOPY_BUILD_MAX_ITEMS &&
