@@ -94,6 +94,15 @@ RUNS = [
     Run("7ft-bend300-8s", SEVEN, "hinge dashpots at 300 /s, run to t = 8 s",
         edits=[(PROPS, "fabric/bendingDamping", "300"),
                ("system/controlDict", "endTime", "8")], reference="7ft"),
+    # The high-pass filter: the dashpots act on the cloth velocity's
+    # deviation from its local linear fit, so the canopy's own shape
+    # changes are damped ~ (k h)^4 less (test_bending_damping_scale.c)
+    Run("7ft-highpass", SEVEN, "hinge dashpots at 10000 /s, high-pass filtered",
+        edits=[(PROPS, "fabric/bendingDampingFilter", "highPass")],
+        reference="7ft"),
+    Run("7ft-highpass-8s", SEVEN, "hinge dashpots at 10000 /s, high-pass filtered, run to t = 8 s",
+        edits=[(PROPS, "fabric/bendingDampingFilter", "highPass"),
+               ("system/controlDict", "endTime", "8")], reference="7ft"),
     # The same without hinge dashpots: the cloth triangles flap at the cell
     # scale (the 0.15 m run's canopy is crumpled at the skirt)
     Run("7ft-undamped-h0.30", SEVEN, "cell 0.30 m, fabric edge 0.375 m, no hinge dashpots",
@@ -135,6 +144,15 @@ RUNS = [
         reference="G11third"),
     Run("G11-folded-deep", G11_FOLDED, "folded start, twice the lift (4 m, 69 %)",
         edits=[("system/canopyFoldDict", "duration", "DOUBLE")],
+        reference="G11third"),
+    Run("G11-flat-highpass", G11, "flat start, high-pass hinge dashpots, to 8 s",
+        edits=[(PROPS, "fabric/bendingDampingFilter", "highPass"),
+               ("system/controlDict", "endTime", "8")],
+        reference="G11third"),
+    Run("G11-folded-deep-highpass", G11_FOLDED,
+        "folded start, twice the lift (4 m, 69 %), high-pass hinge dashpots",
+        edits=[("system/canopyFoldDict", "duration", "DOUBLE"),
+               (PROPS, "fabric/bendingDampingFilter", "highPass")],
         reference="G11third"),
 ]
 RUNS += [

@@ -360,6 +360,37 @@ canopy_model* buildReference
         ),
         "canopy_model_set_porosity"
     );
+    ok
+    (
+        m,
+        canopy_model_set_bending_damping
+        (
+            m, fabricDict.getOrDefault<scalar>("bendingDamping", 0)
+        ),
+        "canopy_model_set_bending_damping"
+    );
+    ok
+    (
+        m,
+        canopy_model_set_bending_damping_implicit
+        (
+            m,
+            fabricDict.getOrDefault<word>("bendingDampingScheme", "explicit")
+         == "implicit"
+        ),
+        "canopy_model_set_bending_damping_implicit"
+    );
+    ok
+    (
+        m,
+        canopy_model_set_bending_damping_filter
+        (
+            m,
+            fabricDict.getOrDefault<word>("bendingDampingFilter", "none")
+         == "highPass"
+        ),
+        "canopy_model_set_bending_damping_filter"
+    );
     const dictionary integ = props.subOrEmptyDict("integrator");
     ok
     (

@@ -397,6 +397,21 @@ canopy_status canopy_model_set_bending_damping(canopy_model *model,
 canopy_status canopy_model_set_bending_damping_implicit(canopy_model *model,
                                                         int implicit);
 int canopy_model_bending_damping_implicit(const canopy_model *model);
+/* high_pass != 0: the hinge dashpots act on P v = v - A v only, the cloth
+ * velocity's deviation from its local linear fit (A v at node i: the
+ * least-squares fit a + g.xi of v over node i and its cloth neighbours in
+ * i's tangent plane, evaluated at i), with the damping matrix P^T C P.
+ * P w ~ (k h)^2 w for a smooth field of wavenumber k on cloth edges h,
+ * so a smooth bending decays at ~ rate (k h)^8 instead of ~ rate (k h)^4,
+ * while single triangles' flapping still decays at about `rate`: the
+ * dashpots regularise the mesh scale and leave the canopy's shape changes.
+ * Still only dissipative; linear momentum is kept, angular momentum up to
+ * the O(h^2 curvature) part of a rotation the tangent-plane fit misses.
+ * Needs the implicit hinge dashpots (canopy_model_prepare fails
+ * otherwise). Default 0. */
+canopy_status canopy_model_set_bending_damping_filter(canopy_model *model,
+                                                      int high_pass);
+int canopy_model_bending_damping_filter(const canopy_model *model);
 
 /* Runaway detection: a step that leaves any node faster than this [m/s]
  * fails with CANOPY_ERR_DIVERGED (as does any NaN/Inf). Default 1e4;

@@ -48,8 +48,14 @@ canopy_status canopy_hinges_build(canopy_model *m)
     h->nodes = NULL;
     h->modes = NULL;
     h->count = 0;
+    canopy_hinge_filter_free(&h->filter);
     const canopy_triangles *t = &m->tris;
     if (m->bending_damping == 0.0 || t->count == 0) return CANOPY_OK;
+    if (m->bending_filter && !m->bending_implicit)
+        return canopy_fail(m, CANOPY_ERR_STATE,
+                           "the bending damping filter "
+                           "(set_bending_damping_filter) needs the implicit "
+                           "hinge dashpots (set_bending_damping_implicit)");
 
     const size_t n_edges = 3 * (size_t)t->count;
     hinge_edge *edges = malloc(n_edges * sizeof *edges);
@@ -94,8 +100,27 @@ canopy_status canopy_hinges_build(canopy_model *m)
         hn[2] = edges[k].a;
         hn[3] = edges[k].b;
     }
+    canopy_status st = CANOPY_OK;
+    if (m->bending_filter) {
+        /* the cloth edges, each once, as node pairs */
+        int *pairs = malloc(2 * sizeof(int) * n_edges), n_pairs = 0;
+        if (pairs == NULL) {
+            free(edges);
+            return canopy_fail(m, CANOPY_ERR_MEMORY,
+                               "cannot allocate the %zu cloth edges", n_edges);
+        }
+        for (size_t k = 0; k < n_edges; ++k) {
+            if (k > 0 && compare_edges(edges + k, edges + k - 1) == 0)
+                continue;
+            pairs[2 * n_pairs] = edges[k].a;
+            pairs[2 * n_pairs + 1] = edges[k].b;
+            ++n_pairs;
+        }
+        st = canopy_hinge_filter_build(m, pairs, n_pairs);
+        free(pairs);
+    }
     free(edges);
-    return CANOPY_OK;
+    return st;
 }
 
 /* The bending modes u (4 x 3) and the dashpot c of hinge k at x; 0 for a

@@ -14,10 +14,12 @@
  *   (M_ff + h C_ff) d = -h (C v)_f
  * by conjugate gradients with the diagonal as preconditioner. M is block
  * diagonal: m I, plus m_a I or, for a directional added mass along the
- * unit vector e, m_a e e^T. */
+ * unit vector e, m_a e e^T. With the high-pass filter on, C is P^T C P
+ * (bending_filter.c): still symmetric positive semi-definite, with
+ * 1^T P^T = 0. */
 
 /* Cache each hinge's modes u (12 doubles, u[4][3]) and dashpot c at x
- * (c = 0: a degenerate hinge). */
+ * (c = 0: a degenerate hinge), and the filter's weights at x. */
 static void cache_modes(canopy_model *m, const double *x)
 {
     for (int k = 0; k < m->hinges.count; ++k) {
@@ -25,17 +27,52 @@ static void cache_modes(canopy_model *m, const double *x)
         if (!canopy_hinge_modes(m, x, k, (double (*)[3])cache, cache + 12))
             cache[12] = 0.0;
     }
+    if (m->bending_filter) canopy_hinge_filter_weights(m, x);
 }
 
 /* y += scale C w with the cached modes (canopy_hinge_apply) */
-static void add_cached_damping(const canopy_model *m, const double *w,
-                               double *y, double scale, int free_only)
+static void add_unfiltered_damping(const canopy_model *m, const double *w,
+                                   double *y, double scale, int free_only)
 {
     for (int k = 0; k < m->hinges.count; ++k) {
         const double *cache = m->hinges.modes + 13 * k;
         if (cache[12] != 0.0)
             canopy_hinge_apply(m, k, (const double (*)[3])cache, cache[12], w,
                                y, scale, free_only);
+    }
+}
+
+/* y += scale P^T F C F P w with the filter on (bending_filter.c; F zeroes
+ * the fixed nodes), else scale C w; free_only: w counts as zero at fixed
+ * nodes, whose rows of y are left untouched. */
+static void add_cached_damping(const canopy_model *m, const double *w,
+                               double *y, double scale, int free_only)
+{
+    if (!m->bending_filter) {
+        add_unfiltered_damping(m, w, y, scale, free_only);
+        return;
+    }
+    const canopy_hinge_filter *f = &m->hinges.filter;
+    const int n = m->nodes.count;
+    double *pw = f->filtered, *cpw = f->spread;
+    if (free_only) {
+        for (int i = 0; i < n; ++i)
+            for (int d = 0; d < 3; ++d)
+                cpw[3 * i + d] = m->nodes.fixed[i] ? 0.0 : w[3 * i + d];
+        canopy_hinge_filter_apply(m, cpw, pw);
+    } else {
+        canopy_hinge_filter_apply(m, w, pw);
+    }
+    /* F P w, F C F P w, P^T F C F P w: F zeroes the fixed nodes, which do
+     * not move (a hinge's c counts only its free nodes' inertia) */
+    for (int i = 0; i < n; ++i)
+        if (m->nodes.fixed[i]) pw[3 * i] = pw[3 * i + 1] = pw[3 * i + 2] = 0.0;
+    for (int k = 0; k < 3 * n; ++k) cpw[k] = 0.0;
+    add_unfiltered_damping(m, pw, cpw, 1.0, 1);
+    canopy_hinge_filter_apply_transpose(m, cpw, pw);
+    for (int i = 0; i < n; ++i) {
+        if (free_only && m->nodes.fixed[i]) continue;
+        for (int d = 0; d < 3; ++d) y[3 * i + d] += scale * pw[3 * i + d];
     }
 }
 
@@ -63,7 +100,7 @@ static void apply_mass(const canopy_model *m, const double *w, double *y)
 }
 
 /* The diagonal of M_ff + h C_ff (1 on fixed nodes' rows). */
-static void diagonal(const canopy_model *m, double h, double *diag)
+static void diagonal(canopy_model *m, double h, double *diag)
 {
     const canopy_nodes *n = &m->nodes;
     for (int i = 0; i < n->count; ++i) {
@@ -77,6 +114,11 @@ static void diagonal(const canopy_model *m, double h, double *diag)
     for (int k = 0; k < m->hinges.count; ++k) {
         const double *u = m->hinges.modes + 13 * k;
         if (u[12] == 0.0) continue; /* degenerate: u not set */
+        if (m->bending_filter) {
+            canopy_hinge_filter_add_diagonal(m, k, (const double (*)[3])u,
+                                             h * u[12], diag);
+            continue;
+        }
         const int *hn = m->hinges.nodes + 4 * k;
         for (int a = 0; a < 4; ++a) {
             if (n->fixed[hn[a]]) continue;
@@ -91,6 +133,12 @@ static double dot(int N, const double *a, const double *b)
     double s = 0.0;
     for (int k = 0; k < N; ++k) s += a[k] * b[k];
     return s;
+}
+
+void canopy_hinge_damping_implicit_forces(canopy_model *m, double *f)
+{
+    cache_modes(m, m->nodes.x);
+    add_cached_damping(m, m->nodes.v, f, -1.0, 0);
 }
 
 canopy_status canopy_hinge_damping_implicit_update(canopy_model *m, double h)

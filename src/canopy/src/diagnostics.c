@@ -125,7 +125,7 @@ canopy_status canopy_model_get_forces(canopy_model *model, double *f, int n)
     if (st != CANOPY_OK) return st;
     canopy_forces(model, model->nodes.x, model->nodes.v, f);
     if (model->bending_implicit && model->hinges.count)
-        canopy_hinge_forces(model, model->nodes.x, model->nodes.v, f);
+        canopy_hinge_damping_implicit_forces(model, f);
     return CANOPY_OK;
 }
 

@@ -134,6 +134,7 @@ void canopy_model_destroy(canopy_model **model)
     free(m->springs.group);
     free(m->tris.nodes); free(m->tris.dp);
     free(m->hinges.nodes); free(m->hinges.modes);
+    canopy_hinge_filter_free(&m->hinges.filter);
     canopy_state_free(&m->checkpoint);
     canopy_state_free(&m->rollback);
     free_work(m);
@@ -780,6 +781,7 @@ canopy_status canopy_model_set_bending_damping_implicit(canopy_model *model,
 {
     NULL_MODEL_CHECK(model);
     model->bending_implicit = implicit ? 1 : 0;
+    model->prepared = 0; /* the filter needs it (bending.c) */
     canopy_clear_message(model);
     return CANOPY_OK;
 }
@@ -787,6 +789,21 @@ canopy_status canopy_model_set_bending_damping_implicit(canopy_model *model,
 int canopy_model_bending_damping_implicit(const canopy_model *model)
 {
     return model ? model->bending_implicit : 0;
+}
+
+canopy_status canopy_model_set_bending_damping_filter(canopy_model *model,
+                                                      int high_pass)
+{
+    NULL_MODEL_CHECK(model);
+    model->bending_filter = high_pass ? 1 : 0;
+    model->prepared = 0; /* the stencils are built (or dropped) by prepare */
+    canopy_clear_message(model);
+    return CANOPY_OK;
+}
+
+int canopy_model_bending_damping_filter(const canopy_model *model)
+{
+    return model ? model->bending_filter : 0;
 }
 
 canopy_status canopy_model_set_speed_limit(canopy_model *model, double vmax)
@@ -810,6 +827,13 @@ size_t canopy_model_memory_bytes(const canopy_model *model)
          (2 * sizeof(int) + 6 * sizeof(double) + 2);
     b += (size_t)model->tris.capacity * (3 * sizeof(int) + sizeof(double));
     b += (4 * sizeof(int) + 13 * sizeof(double)) * (size_t)model->hinges.count;
+    const canopy_hinge_filter *f = &model->hinges.filter;
+    if (f->start) {
+        const size_t n = (size_t)model->nodes.count;
+        const size_t entries = (size_t)f->start[n];
+        b += (2 * n + 1) * sizeof(int) + 9 * n * sizeof(double) +
+             entries * (sizeof(int) + sizeof(double));
+    }
     b += model->work_bytes;
     b += 9 * sizeof(double) * (size_t)model->checkpoint.count;
     b += 9 * sizeof(double) * (size_t)model->rollback.count;

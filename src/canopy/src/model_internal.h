@@ -42,6 +42,18 @@ typedef struct canopy_triangles {
     double *dp;         /* pressure jump */
 } canopy_triangles;
 
+/* The hinge dashpots' high-pass filter (bending_filter.c): node i's
+ * stencil nodes[start[i] .. start[i+1]) is i itself, then its cloth
+ * neighbours; weights are A's row i (the linear fit's value at i). */
+#define CANOPY_FILTER_MAX_STENCIL 128
+typedef struct canopy_hinge_filter {
+    int *start;         /* node count + 1 */
+    int *nodes;
+    double *weights;    /* at one shape, set by canopy_hinge_filter_weights */
+    int *slot;          /* node count, -1: scratch of the diagonal */
+    double *normals, *filtered, *spread; /* 3 * node count, scratch */
+} canopy_hinge_filter;
+
 /* Hinges (edges shared by two triangles) for the bending dashpots, built
  * from the triangles by canopy_model_prepare when bending_damping > 0. */
 typedef struct canopy_hinges {
@@ -50,6 +62,7 @@ typedef struct canopy_hinges {
     double *modes;      /* 13*count: bending modes u (4 x 3) and dashpot c at
                            one shape, cached by the implicit update
                            (bending_implicit.c) */
+    canopy_hinge_filter filter; /* allocated when bending_filter is on */
 } canopy_hinges;
 
 /* Saved state for checkpoint/restore and for failed-step rollback. */
@@ -69,6 +82,8 @@ struct canopy_model {
     double bending_damping; /* decay rate of a hinge's bending [1/s] (bending.c) */
     int bending_implicit;   /* hinge dashpots as a backward-Euler velocity
                                update after each step (bending_implicit.c) */
+    int bending_filter;     /* hinge dashpots on the velocity's high-pass
+                               part only (bending_filter.c; implicit only) */
 
     double t;
     int acc_valid;      /* nodes.acc holds the last HHT step's acceleration */
@@ -144,6 +159,25 @@ void canopy_hinge_apply(const canopy_model *model, int k, const double u[4][3],
                         int free_only);
 /* With bending_implicit: v <- (M + h C)^-1 M v at the current positions
  * (bending_implicit.c); CANOPY_ERR_DIVERGED if the solve fails. */
+/* The high-pass filter (bending_filter.c): build the stencils from the
+ * cloth edges (pairs of nodes, n_edges of them); set A's weights at x;
+ * out = (I - A) w; out = (I - A)^T z; add scale (U_k P)_j^2 (hinge k's row
+ * of U P with modes u, squared per component) to diag at every free node
+ * j it touches. */
+canopy_status canopy_hinge_filter_build(canopy_model *model, const int *edges,
+                                        int n_edges);
+void canopy_hinge_filter_free(canopy_hinge_filter *filter);
+void canopy_hinge_filter_weights(canopy_model *model, const double *x);
+void canopy_hinge_filter_apply(const canopy_model *model, const double *w,
+                               double *out);
+void canopy_hinge_filter_apply_transpose(const canopy_model *model,
+                                         const double *z, double *out);
+void canopy_hinge_filter_add_diagonal(canopy_model *model, int k,
+                                      const double u[4][3], double scale,
+                                      double *diag);
+/* f += the hinge dashpots' forces at the model's state, as the implicit
+ * update applies them (filtered if the filter is on). */
+void canopy_hinge_damping_implicit_forces(canopy_model *model, double *f);
 canopy_status canopy_hinge_damping_implicit_update(canopy_model *model,
                                                    double h);
 /* Accelerations (3*n): forces over effective mass; zero at fixed nodes. */

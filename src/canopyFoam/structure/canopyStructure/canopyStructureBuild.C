@@ -634,6 +634,7 @@ void Foam::canopyStructure::build(const vector& defaultGravity)
     scalar beta = 0;
     scalar bendingDamping = 0;
     word bendingDampingScheme("explicit");
+    word bendingDampingFilter("none");
     if (const dictionary* d = top.optionalDict("fabric"))
     {
         const entryReader fr(*d, "fabric");
@@ -647,6 +648,23 @@ void Foam::canopyStructure::build(const vector& defaultGravity)
             "bendingDampingScheme", wordList{"explicit", "implicit"},
             "hinge dashpot scheme", bendingDampingScheme
         );
+        bendingDampingFilter = fr.select
+        (
+            "bendingDampingFilter", wordList{"none", "highPass"},
+            "hinge dashpot filter", bendingDampingFilter
+        );
+        if
+        (
+            bendingDampingFilter == "highPass"
+         && bendingDampingScheme != "implicit"
+        )
+        {
+            fr.fail
+            (
+                "bendingDampingFilter",
+                "highPass needs bendingDampingScheme implicit"
+            );
+        }
         if (const dictionary* pd = fr.optionalDict("porosity"))
         {
             const entryReader pr(*pd, "fabric.porosity");
@@ -659,7 +677,8 @@ void Foam::canopyStructure::build(const vector& defaultGravity)
             wordList
             {
                 "arealDensity", "stiffness", "tensileStiffness", "damping",
-                "bendingDamping", "bendingDampingScheme", "law", "porosity"
+                "bendingDamping", "bendingDampingScheme",
+                "bendingDampingFilter", "law", "porosity"
             },
             ""
         );
@@ -970,6 +989,14 @@ void Foam::canopyStructure::build(const vector& defaultGravity)
             m, bendingDampingScheme == "implicit"
         ),
         FUNCTION_NAME, "canopy_model_set_bending_damping_implicit"
+    );
+    check
+    (
+        canopy_model_set_bending_damping_filter
+        (
+            m, bendingDampingFilter == "highPass"
+        ),
+        FUNCTION_NAME, "canopy_model_set_bending_damping_filter"
     );
     check
     (
