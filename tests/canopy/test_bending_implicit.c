@@ -50,6 +50,35 @@ static void momenta(int n, const double *mass, double added, const double *x,
     }
 }
 
+/* What one update did to rigid motion plus flapping (v before, v1 after,
+ * vr the rigid part alone, all at positions x1): the largest change of a
+ * momentum and of an angular momentum component, the flapping's momentum
+ * scale sum_i M_i |v_z - vr_z|, and the kinetic energies; printed. */
+typedef struct update_balance {
+    double dP, dL, flap_momentum, K0, K1, Kr;
+} update_balance;
+
+static update_balance balance(int n, const double *mass, double added,
+                              const double *x1, const double *v,
+                              const double *v1, const double *vr)
+{
+    update_balance b = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    double P0[3], L0[3], P1[3], L1[3], Pr[3], Lr[3];
+    momenta(n, mass, added, x1, v, P0, L0, &b.K0);
+    momenta(n, mass, added, x1, v1, P1, L1, &b.K1);
+    momenta(n, mass, added, x1, vr, Pr, Lr, &b.Kr);
+    for (int i = 0; i < n; ++i)
+        b.flap_momentum += (mass[i] + added) * fabs(v[3 * i + 2] - vr[3 * i + 2]);
+    for (int d = 0; d < 3; ++d) {
+        b.dP = fmax(b.dP, fabs(P1[d] - P0[d]));
+        b.dL = fmax(b.dL, fabs(L1[d] - L0[d]));
+    }
+    printf("  flapping: momentum change %.2g, angular %.2g (scale %.3g); "
+           "kinetic energy %.4g -> %.4g J (rigid part %.4g J)\n",
+           b.dP, b.dL, b.flap_momentum, b.K0, b.K1, b.Kr);
+    return b;
+}
+
 /* The grid's test motion at positions x: vr a rigid translation RIGID_V
  * plus rotation RIGID_W; v the same plus a flapping of the nodes in z. */
 static const double RIGID_V[3] = {0.7, -1.1, 0.4};
@@ -110,32 +139,20 @@ CANOPY_TEST(bending_damping_implicit_keeps_momentum_and_dissipates)
     /* Rigid motion plus flapping */
     ASSERT_OK(m, canopy_model_set_positions(m, x, n));
     ASSERT_OK(m, canopy_model_set_velocities(m, v, n));
-    double x1[48], P0[3], L0[3], K0, P1[3], L1[3], K1, Pr[3], Lr[3], Kr;
+    double x1[48];
     ASSERT_OK(m, canopy_model_step(m, h));
     ASSERT_OK(m, canopy_model_get_positions(m, x1, n));
     ASSERT_OK(m, canopy_model_get_velocities(m, v1, n));
-    /* before the update: x1 with v (Euler's free flight keeps x x v) */
-    momenta(n, mass, 0.2, x1, v, P0, L0, &K0);
-    momenta(n, mass, 0.2, x1, v1, P1, L1, &K1);
-    momenta(n, mass, 0.2, x1, vr, Pr, Lr, &Kr);
-    double flap_momentum = 0.0, dP = 0.0, dL = 0.0;
-    for (int i = 0; i < n; ++i)
-        flap_momentum += (mass[i] + 0.2) * fabs(v[3 * i + 2] - vr[3 * i + 2]);
-    for (int d = 0; d < 3; ++d) {
-        dP = fmax(dP, fabs(P1[d] - P0[d]));
-        dL = fmax(dL, fabs(L1[d] - L0[d]));
-    }
     printf("  translation: largest velocity change %.2g m/s\n", rigid_change);
-    printf("  flapping: momentum change %.2g, angular %.2g (scale %.3g); "
-           "kinetic energy %.4g -> %.4g J (rigid part %.4g J)\n",
-           dP, dL, flap_momentum, K0, K1, Kr);
+    /* before the update: x1 with v (Euler's free flight keeps x x v) */
+    const update_balance b = balance(n, mass, 0.2, x1, v, v1, vr);
     ASSERT_TRUE(rigid_change < 1e-12);
-    ASSERT_TRUE(dP < 1e-9 * flap_momentum);
-    ASSERT_TRUE(dL < 1e-9 * flap_momentum);
-    ASSERT_TRUE(K1 < K0);
+    ASSERT_TRUE(b.dP < 1e-9 * b.flap_momentum);
+    ASSERT_TRUE(b.dL < 1e-9 * b.flap_momentum);
+    ASSERT_TRUE(b.K1 < b.K0);
     /* most of the flapping's energy is gone: what is left above the rigid
      * motion's energy is under a quarter of what it was */
-    ASSERT_TRUE(K1 - Kr < 0.25 * (K0 - Kr));
+    ASSERT_TRUE(b.K1 - b.Kr < 0.25 * (b.K0 - b.Kr));
     canopy_model_destroy(&m);
 }
 
@@ -253,26 +270,13 @@ CANOPY_TEST(bending_damping_filter_keeps_momentum_and_dissipates)
     ASSERT_OK(m, canopy_model_step(m, h));
     ASSERT_OK(m, canopy_model_get_positions(m, x1, n));
     ASSERT_OK(m, canopy_model_get_velocities(m, v1, n));
-    double P0[3], L0[3], K0, P1[3], L1[3], K1, Pr[3], Lr[3], Kr;
-    momenta(n, mass, 0.0, x1, v, P0, L0, &K0);
-    momenta(n, mass, 0.0, x1, v1, P1, L1, &K1);
-    momenta(n, mass, 0.0, x1, vr, Pr, Lr, &Kr);
-    double flap_momentum = 0.0, dP = 0.0, dL = 0.0;
-    for (int i = 0; i < n; ++i)
-        flap_momentum += mass[i] * fabs(v[3 * i + 2] - vr[3 * i + 2]);
-    for (int d = 0; d < 3; ++d) {
-        dP = fmax(dP, fabs(P1[d] - P0[d]));
-        dL = fmax(dL, fabs(L1[d] - L0[d]));
-    }
     printf("  rigid motion: largest velocity change %.2g m/s\n", rigid_change);
-    printf("  flapping: momentum change %.2g, angular %.2g (scale %.3g); "
-           "kinetic energy %.4g -> %.4g J (rigid part %.4g J)\n",
-           dP, dL, flap_momentum, K0, K1, Kr);
+    const update_balance b = balance(n, mass, 0.0, x1, v, v1, vr);
     ASSERT_TRUE(rigid_change < 1e-12);
-    ASSERT_TRUE(dP < 1e-9 * flap_momentum);
-    ASSERT_TRUE(dL < 1e-3 * 0.9 * flap_momentum);
-    ASSERT_TRUE(K1 < K0);
-    ASSERT_TRUE(K1 - Kr < 0.25 * (K0 - Kr));
+    ASSERT_TRUE(b.dP < 1e-9 * b.flap_momentum);
+    ASSERT_TRUE(b.dL < 1e-3 * 0.9 * b.flap_momentum);
+    ASSERT_TRUE(b.K1 < b.K0);
+    ASSERT_TRUE(b.K1 - b.Kr < 0.25 * (b.K0 - b.Kr));
     canopy_model_destroy(&m);
 }
 

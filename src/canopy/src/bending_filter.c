@@ -116,6 +116,18 @@ static int tangent_basis(const double *normal, double t1[3], double t2[3])
     return 1;
 }
 
+/* phi = (1, xi1, xi2): node j's coordinates in node i's tangent plane
+ * (basis t1, t2), over scale */
+static void fit_basis(const double *x, int i, int j, const double t1[3],
+                      const double t2[3], double scale, double phi[3])
+{
+    const double *xi = x + 3 * i, *xj = x + 3 * j;
+    const double d[3] = {xj[0] - xi[0], xj[1] - xi[1], xj[2] - xi[2]};
+    phi[0] = 1.0;
+    phi[1] = (d[0] * t1[0] + d[1] * t1[1] + d[2] * t1[2]) / scale;
+    phi[2] = (d[0] * t2[0] + d[1] * t2[1] + d[2] * t2[2]) / scale;
+}
+
 /* Weights of node i's stencil: the linear fit's value at node i, or the
  * stencil's mean where the fit is ill-posed. */
 static void stencil_weights(const canopy_hinge_filter *f, const double *x,
@@ -136,15 +148,10 @@ static void stencil_weights(const canopy_hinge_filter *f, const double *x,
         }
         scale /= count - 1;
         if (scale > 0.0) {
-            /* normal matrix M = sum phi phi^T, phi = (1, xi1, xi2) */
-            double M[3][3] = {{0.0}};
+            /* normal matrix M = sum phi phi^T */
+            double M[3][3] = {{0.0}}, phi[3];
             for (int s = s0; s < s1; ++s) {
-                const double *xj = x + 3 * f->nodes[s];
-                const double d[3] = {xj[0] - xi[0], xj[1] - xi[1],
-                                     xj[2] - xi[2]};
-                const double phi[3] = {
-                    1.0, (d[0] * t1[0] + d[1] * t1[1] + d[2] * t1[2]) / scale,
-                    (d[0] * t2[0] + d[1] * t2[1] + d[2] * t2[2]) / scale};
+                fit_basis(x, i, f->nodes[s], t1, t2, scale, phi);
                 for (int a = 0; a < 3; ++a)
                     for (int b = 0; b < 3; ++b) M[a][b] += phi[a] * phi[b];
             }
@@ -155,16 +162,9 @@ static void stencil_weights(const canopy_hinge_filter *f, const double *x,
             const double det = M[0][0] * c0 + M[0][1] * c1 + M[0][2] * c2;
             /* a well-spread stencil of p points has det ~ p^3 / 10 */
             if (det > 1e-3 * count * count * count) {
-                const double y[3] = {c0 / det, c1 / det, c2 / det};
                 for (int s = s0; s < s1; ++s) {
-                    const double *xj = x + 3 * f->nodes[s];
-                    const double d[3] = {xj[0] - xi[0], xj[1] - xi[1],
-                                         xj[2] - xi[2]};
-                    const double p1 =
-                        (d[0] * t1[0] + d[1] * t1[1] + d[2] * t1[2]) / scale;
-                    const double p2 =
-                        (d[0] * t2[0] + d[1] * t2[1] + d[2] * t2[2]) / scale;
-                    w[s - s0] = y[0] + y[1] * p1 + y[2] * p2;
+                    fit_basis(x, i, f->nodes[s], t1, t2, scale, phi);
+                    w[s - s0] = (c0 * phi[0] + c1 * phi[1] + c2 * phi[2]) / det;
                 }
                 fitted = 1;
             }
