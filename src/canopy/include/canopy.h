@@ -400,7 +400,8 @@ int canopy_model_bending_damping_implicit(const canopy_model *model);
 /* high_pass != 0: the hinge dashpots act on P v = v - A v only, the cloth
  * velocity's deviation from its local linear fit (A v at node i: the
  * least-squares fit a + g.xi of v over node i and its cloth neighbours in
- * i's tangent plane, evaluated at i), with the damping matrix P^T C P.
+ * i's tangent plane, evaluated at i), with the damping matrix P^T F C F P
+ * (F: the fixed nodes, which do not move, left out).
  * P w ~ (k h)^2 w for a smooth field of wavenumber k on cloth edges h,
  * so a smooth bending decays at ~ rate (k h)^8 instead of ~ rate (k h)^4,
  * while single triangles' flapping still decays at about `rate`: the
@@ -411,7 +412,6 @@ int canopy_model_bending_damping_implicit(const canopy_model *model);
  * otherwise). Default 0. */
 canopy_status canopy_model_set_bending_damping_filter(canopy_model *model,
                                                       int high_pass);
-int canopy_model_bending_damping_filter(const canopy_model *model);
 
 /* Runaway detection: a step that leaves any node faster than this [m/s]
  * fails with CANOPY_ERR_DIVERGED (as does any NaN/Inf). Default 1e4;

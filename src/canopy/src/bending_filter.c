@@ -6,17 +6,17 @@
 
 /* With the filter on, the hinge dashpots' damping matrix C (bending.c)
  * becomes P^T F C F P with P = I - A and F zeroing the fixed nodes (they
- * do not move, and a hinge's c counts only its free nodes' inertia): (A w)_i is the value at node i of the
- * least-squares linear fit a + g.xi of w over node i and its cloth
- * neighbours (the nodes it shares a triangle edge with), xi their
- * positions in node i's tangent plane. A reproduces any field linear over
+ * do not move, and a hinge's c counts only its free nodes' inertia).
+ * (A w)_i is the value at node i of the least-squares linear fit
+ * a + g.xi of w over node i and its cloth neighbours (the nodes it shares
+ * a triangle edge with), xi their positions in node i's tangent plane. A reproduces any field linear over
  * the stencil, so P w is the second-difference part of w, ~ (k h)^2 w for
  * a smooth field of wavenumber k on edges h, but of the order of w for
  * flapping at the mesh scale. A smooth bending then decays at
  * ~ rate (k h)^8 instead of ~ rate (k h)^4 (test_bending_damping_scale.c),
  * while single triangles' flapping still decays at about the rate.
- * P^T F C F P is symmetric positive semi-definite, so the dashpots still only
- * dissipate. A's rows sum to 1 (a constant is fitted exactly), so
+ * P^T F C F P is symmetric positive semi-definite, so the dashpots still
+ * only dissipate. A's rows sum to 1 (a constant is fitted exactly), so
  * 1^T P^T = 0 and linear momentum is kept; a rigid rotation is linear in
  * space, so P leaves only its O(h^2 curvature) part off the tangent plane.
  * Where the fit is ill-posed (neighbours nearly on a line in the tangent
@@ -32,8 +32,10 @@ void canopy_hinge_filter_free(canopy_hinge_filter *f)
     free(f->filtered);
     free(f->spread);
     free(f->slot);
-    f->start = f->nodes = f->slot = NULL;
-    f->weights = f->normals = f->filtered = f->spread = NULL;
+    free(f->touched);
+    free(f->row);
+    f->start = f->nodes = f->slot = f->touched = NULL;
+    f->weights = f->normals = f->filtered = f->spread = f->row = NULL;
 }
 
 canopy_status canopy_hinge_filter_build(canopy_model *m, const int *edges,
@@ -74,18 +76,20 @@ canopy_status canopy_hinge_filter_build(canopy_model *m, const int *edges,
         f->nodes[fill[a]++] = b;
         f->nodes[fill[b]++] = a;
     }
-    int largest = 0;
+    /* a hinge's row of U F P touches at most its four stencils */
+    f->largest = 0;
     for (int i = 0; i < n; ++i) {
         f->slot[i] = -1;
-        if (f->start[i + 1] - f->start[i] > largest)
-            largest = f->start[i + 1] - f->start[i];
+        if (f->start[i + 1] - f->start[i] > f->largest)
+            f->largest = f->start[i + 1] - f->start[i];
     }
-    if (largest > CANOPY_FILTER_MAX_STENCIL) {
+    f->touched = malloc(4 * (size_t)f->largest * sizeof(int));
+    f->row = malloc(12 * (size_t)f->largest * sizeof(double));
+    if (!f->touched || !f->row) {
         canopy_hinge_filter_free(f);
-        return canopy_fail(m, CANOPY_ERR_STATE,
-                           "the bending damping filter takes at most %d "
-                           "cloth neighbours per node; a node has %d",
-                           CANOPY_FILTER_MAX_STENCIL - 1, largest - 1);
+        return canopy_fail(m, CANOPY_ERR_MEMORY,
+                           "cannot allocate the bending damping filter of %d "
+                           "nodes", n);
     }
     return CANOPY_OK;
 }
@@ -227,8 +231,8 @@ void canopy_hinge_filter_add_diagonal(canopy_model *m, int k,
      * P_{n_a j} = delta - A */
     canopy_hinge_filter *f = &m->hinges.filter;
     const int *hn = m->hinges.nodes + 4 * k;
-    int touched[4 * CANOPY_FILTER_MAX_STENCIL];
-    double row[4 * CANOPY_FILTER_MAX_STENCIL][3];
+    int *touched = f->touched;
+    double (*row)[3] = (double (*)[3])f->row;
     int count = 0;
     for (int a = 0; a < 4; ++a) {
         const int i = hn[a];
@@ -250,6 +254,7 @@ void canopy_hinge_filter_add_diagonal(canopy_model *m, int k,
         const int j = touched[c];
         f->slot[j] = -1;
         if (m->nodes.fixed[j]) continue;
-        for (int d = 0; d < 3; ++d) diag[3 * j + d] += scale * row[c][d] * row[c][d];
+        for (int d = 0; d < 3; ++d)
+            diag[3 * j + d] += scale * row[c][d] * row[c][d];
     }
 }

@@ -14,9 +14,9 @@
  *   (M_ff + h C_ff) d = -h (C v)_f
  * by conjugate gradients with the diagonal as preconditioner. M is block
  * diagonal: m I, plus m_a I or, for a directional added mass along the
- * unit vector e, m_a e e^T. With the high-pass filter on, C is P^T C P
- * (bending_filter.c): still symmetric positive semi-definite, with
- * 1^T P^T = 0. */
+ * unit vector e, m_a e e^T. With the high-pass filter on, C is
+ * P^T F C F P (bending_filter.c): still symmetric positive semi-definite,
+ * with 1^T P^T = 0. */
 
 /* Cache each hinge's modes u (12 doubles, u[4][3]) and dashpot c at x
  * (c = 0: a degenerate hinge), and the filter's weights at x. */

@@ -801,11 +801,6 @@ canopy_status canopy_model_set_bending_damping_filter(canopy_model *model,
     return CANOPY_OK;
 }
 
-int canopy_model_bending_damping_filter(const canopy_model *model)
-{
-    return model ? model->bending_filter : 0;
-}
-
 canopy_status canopy_model_set_speed_limit(canopy_model *model, double vmax)
 {
     NULL_MODEL_CHECK(model);
@@ -831,7 +826,9 @@ size_t canopy_model_memory_bytes(const canopy_model *model)
     if (f->start) {
         const size_t n = (size_t)model->nodes.count;
         const size_t entries = (size_t)f->start[n];
-        b += (2 * n + 1) * sizeof(int) + 9 * n * sizeof(double) +
+        const size_t largest = (size_t)f->largest;
+        b += (2 * n + 1 + 4 * largest) * sizeof(int) +
+             (9 * n + 12 * largest) * sizeof(double) +
              entries * (sizeof(int) + sizeof(double));
     }
     b += model->work_bytes;

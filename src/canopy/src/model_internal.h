@@ -45,13 +45,15 @@ typedef struct canopy_triangles {
 /* The hinge dashpots' high-pass filter (bending_filter.c): node i's
  * stencil nodes[start[i] .. start[i+1]) is i itself, then its cloth
  * neighbours; weights are A's row i (the linear fit's value at i). */
-#define CANOPY_FILTER_MAX_STENCIL 128
 typedef struct canopy_hinge_filter {
     int *start;         /* node count + 1 */
     int *nodes;
     double *weights;    /* at one shape, set by canopy_hinge_filter_weights */
-    int *slot;          /* node count, -1: scratch of the diagonal */
     double *normals, *filtered, *spread; /* 3 * node count, scratch */
+    int largest;        /* the largest stencil's size */
+    int *slot;          /* node count, -1: scratch of the diagonal, with */
+    int *touched;       /* 4 * largest */
+    double *row;        /* 12 * largest */
 } canopy_hinge_filter;
 
 /* Hinges (edges shared by two triangles) for the bending dashpots, built
@@ -157,13 +159,11 @@ int canopy_hinge_modes(const canopy_model *model, const double *x, int k,
 void canopy_hinge_apply(const canopy_model *model, int k, const double u[4][3],
                         double c, const double *w, double *y, double scale,
                         int free_only);
-/* With bending_implicit: v <- (M + h C)^-1 M v at the current positions
- * (bending_implicit.c); CANOPY_ERR_DIVERGED if the solve fails. */
 /* The high-pass filter (bending_filter.c): build the stencils from the
  * cloth edges (pairs of nodes, n_edges of them); set A's weights at x;
- * out = (I - A) w; out = (I - A)^T z; add scale (U_k P)_j^2 (hinge k's row
- * of U P with modes u, squared per component) to diag at every free node
- * j it touches. */
+ * out = (I - A) w; out = (I - A)^T z; add scale (U F P)_kj^2 (hinge k's
+ * row of U F P with modes u, squared per component) to diag at every free
+ * node j it touches. */
 canopy_status canopy_hinge_filter_build(canopy_model *model, const int *edges,
                                         int n_edges);
 void canopy_hinge_filter_free(canopy_hinge_filter *filter);
@@ -178,6 +178,8 @@ void canopy_hinge_filter_add_diagonal(canopy_model *model, int k,
 /* f += the hinge dashpots' forces at the model's state, as the implicit
  * update applies them (filtered if the filter is on). */
 void canopy_hinge_damping_implicit_forces(canopy_model *model, double *f);
+/* With bending_implicit: v <- (M + h C)^-1 M v at the current positions
+ * (bending_implicit.c); CANOPY_ERR_DIVERGED if the solve fails. */
 canopy_status canopy_hinge_damping_implicit_update(canopy_model *model,
                                                    double h);
 /* Accelerations (3*n): forces over effective mass; zero at fixed nodes. */
