@@ -173,6 +173,46 @@ RUNS += [
         "folded start (51 % of the flat projected diameter)",
         steady_start=1.5, steady_end=3.5),
 ]
+# The cloth's springs at 10 % of their stiffness in compression
+# (fabric.compressionRatio): the skirt may gather in as real cloth wrinkles
+# (modelII cloth holds the large canopies at 0.85-0.93 D0, with hoop
+# compressions of hundreds of newtons in single springs)
+SOFT = [(PROPS, "fabric/compressionRatio", "0.1")]
+RUNS += [
+    Run("7ft-compress0.1", SEVEN, "cloth at 10 % stiffness in compression",
+        edits=SOFT, reference="7ft"),
+    Run("7ft-compress0.1-8s", SEVEN,
+        "cloth at 10 % stiffness in compression, run to t = 8 s",
+        edits=SOFT + [("system/controlDict", "endTime", "8")],
+        reference="7ft"),
+    Run("G11-flat-compress0.1", G11,
+        "flat start, cloth at 10 % stiffness in compression, to 16 s",
+        edits=SOFT + [("system/controlDict", "endTime", "16")],
+        reference="G11third"),
+    Run("G11-folded-compress0.1", G11_FOLDED,
+        "folded start (2 m lift), cloth at 10 % stiffness in compression, to 16 s",
+        edits=SOFT + [("system/controlDict", "endTime", "16")],
+        reference="G11third"),
+    Run("G11-folded-deep-compress0.1", G11_FOLDED,
+        "folded start (4 m lift), cloth at 10 % stiffness in compression, to 16 s",
+        edits=SOFT + [("system/canopyFoldDict", "duration", "DOUBLE"),
+                      ("system/controlDict", "endTime", "16")],
+        reference="G11third"),
+    Run("T10-m100-compress0.1", T10,
+        "payload 100 kg, cloth at 10 % stiffness in compression",
+        edits=SOFT, reference="T10", steady_start=5, steady_end=10),
+    Run("T10-m300-compress0.1", T10,
+        "payload 300 kg, cloth at 10 % stiffness in compression",
+        edits=SOFT + [(PROPS, "payload/mass", "300")], reference="T10",
+        steady_start=5, steady_end=10),
+    Run("T10-m600-compress0.1", T10,
+        "payload 600 kg, cloth at 10 % stiffness in compression",
+        edits=SOFT + [(PROPS, "payload/mass", "600")], reference="T10",
+        steady_start=5, steady_end=10),
+    Run("C9-compress0.1", "parachutes/C9",
+        "cloth at 10 % stiffness in compression, to 16 s",
+        edits=SOFT + [("system/controlDict", "endTime", "16")]),
+]
 RUN_BY_ID = {r.ident: r for r in RUNS}
 
 STUDIES = [

@@ -391,6 +391,15 @@ canopy_model* buildReference
         ),
         "canopy_model_set_bending_damping_filter"
     );
+    ok
+    (
+        m,
+        canopy_model_set_fabric_compression
+        (
+            m, fabricDict.getOrDefault<scalar>("compressionRatio", 1)
+        ),
+        "canopy_model_set_fabric_compression"
+    );
     const dictionary integ = props.subOrEmptyDict("integrator");
     ok
     (
@@ -523,6 +532,26 @@ void compareModels(const canopy_model* a, canopy_model* b)
     canopy_model_energies(b, &enb);
     report(ena.gravity == enb.gravity, "gravity energy (gravity vector)",
         str(ena.gravity) + " vs " + str(enb.gravity));
+
+    // Every spring 1 % shorter (the structure shrunk about the origin): the
+    // spring energy holds the cloth's stiffness in compression
+    {
+        std::vector<double> xa(3*n), xb(3*n), shrunk(3*n);
+        canopy_model_get_positions(a, xa.data(), n);
+        canopy_model_get_positions(b, xb.data(), n);
+        for (int i = 0; i < 3*n; ++i) shrunk[i] = 0.99*xa[i];
+        canopy_model* am = const_cast<canopy_model*>(a);
+        canopy_model_set_positions(am, shrunk.data(), n);
+        canopy_model_set_positions(b, shrunk.data(), n);
+        canopy_energies ca, cb;
+        canopy_model_energies(a, &ca);
+        canopy_model_energies(b, &cb);
+        canopy_model_set_positions(am, xa.data(), n);
+        canopy_model_set_positions(b, xb.data(), n);
+        report(ca.spring == cb.spring,
+            "spring energy 1 % compressed (fabric.compressionRatio, law)",
+            str(ca.spring) + " vs " + str(cb.spring));
+    }
 
     const scalar wa = canopy_model_seepage_velocity(a, 100);
     const scalar wb = canopy_model_seepage_velocity(b, 100);

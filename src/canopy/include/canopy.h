@@ -413,6 +413,19 @@ int canopy_model_bending_damping_implicit(const canopy_model *model);
 canopy_status canopy_model_set_bending_damping_filter(canopy_model *model,
                                                       int high_pass);
 
+/* The cloth's Model-II springs (group CANOPY_GROUP_FABRIC) take `ratio`
+ * times their stiffness while shorter than their rest length:
+ *   f_i = +r k (l - l0) e  for l < l0,  +k (l - l0) e  otherwise,
+ * energy r k (l - l0)^2 / 2 in compression; their dashpots are unchanged.
+ * Real cloth buckles into wrinkles under a small compressive load; on a
+ * mesh coarser than the wrinkles a spring that resists compression as
+ * stiffly as tension holds a canopy's skirt out (hoop compression), and
+ * one that does not resist it at all (tension-only) leaves the slack
+ * cloth nothing to hold it. ratio in [0, 1]; default 1 (Model-II as in
+ * seed 000 eq. 2.18). Other groups' springs are not affected. */
+canopy_status canopy_model_set_fabric_compression(canopy_model *model,
+                                                  double ratio);
+
 /* Runaway detection: a step that leaves any node faster than this [m/s]
  * fails with CANOPY_ERR_DIVERGED (as does any NaN/Inf). Default 1e4;
  * pass INFINITY to check only for NaN/Inf. */

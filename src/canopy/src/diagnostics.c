@@ -20,7 +20,8 @@ static double spring_energy(const canopy_model *m, int k)
     const double l = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
     double stretch = l - s->rest[k];                /* seed 000 eq. 2.14 */
     if (s->law[k] == CANOPY_SPRING_TENSION_ONLY && stretch < 0.0) stretch = 0.0;
-    return 0.5 * s->k[k] * stretch * stretch;
+    const double factor = stretch < 0.0 ? canopy_compression_factor(m, k) : 1.0;
+    return 0.5 * factor * s->k[k] * stretch * stretch;
 }
 
 canopy_status canopy_model_energies(const canopy_model *model,
@@ -158,6 +159,9 @@ canopy_status canopy_model_get_tensions(const canopy_model *model, double *T,
         }
         if (s->law[k] == CANOPY_SPRING_TENSION_ONLY && stretch <= 0.0)
             T[k] = 0.0;
+        else if (s->law[k] == CANOPY_SPRING_MODEL_II && stretch < 0.0)
+            T[k] = canopy_compression_factor(model, k) * s->k[k] * stretch +
+                   s->c[k] * rate;
         else
             T[k] = s->k[k] * stretch + s->c[k] * rate;
     }

@@ -6,7 +6,8 @@
 
 /* Spring and dashpot forces. For spring s between i and j with d = x_j - x_i,
  * l = |d|, e = d / l:
- *   Model-II      f_i = +k (l - l0) e           (seed 000 eq. 2.18)
+ *   Model-II      f_i = +k (l - l0) e           (seed 000 eq. 2.18), with
+ *                 k times the cloth's compression ratio r while l < l0
  *   Model-I       f_i = +k (d - d0)             (seed 000 eq. 2.17)
  *   tension-only  f_i = +k max(l - l0, 0) e
  * plus the dashpot f_i = +c ((v_j - v_i).e) e; f_j = -f_i. */
@@ -43,7 +44,11 @@ static void spring_forces(const canopy_model *m, const double *x,
             break;
         }
         default: {
-            const double T = s->k[k] * (l - s->rest[k]) + s->c[k] * rate;
+            const double stretch = l - s->rest[k];
+            const double stiffness =
+                stretch < 0.0 ? s->k[k] * canopy_compression_factor(m, k)
+                              : s->k[k];
+            const double T = stiffness * stretch + s->c[k] * rate;
             fx = T * e0; fy = T * e1; fz = T * e2;
             break;
         }

@@ -107,6 +107,7 @@ canopy_status canopy_model_create(canopy_model **out)
     m->implicit_tol = 1e-10;
     m->implicit_max_iter = 25;
     m->speed_limit = 1e4;
+    m->fabric_compression = 1.0;
     *out = m;
     return CANOPY_OK;
 }
@@ -797,6 +798,19 @@ canopy_status canopy_model_set_bending_damping_filter(canopy_model *model,
     NULL_MODEL_CHECK(model);
     model->bending_filter = high_pass ? 1 : 0;
     model->prepared = 0; /* the stencils are built (or dropped) by prepare */
+    canopy_clear_message(model);
+    return CANOPY_OK;
+}
+
+canopy_status canopy_model_set_fabric_compression(canopy_model *model,
+                                                  double ratio)
+{
+    NULL_MODEL_CHECK(model);
+    if (!(ratio >= 0.0 && ratio <= 1.0))
+        return canopy_fail(model, CANOPY_ERR_ARGUMENT,
+                           "set_fabric_compression: ratio %g must be in "
+                           "[0, 1]", ratio);
+    model->fabric_compression = ratio;
     canopy_clear_message(model);
     return CANOPY_OK;
 }

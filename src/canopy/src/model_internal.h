@@ -86,6 +86,9 @@ struct canopy_model {
                                update after each step (bending_implicit.c) */
     int bending_filter;     /* hinge dashpots on the velocity's high-pass
                                part only (bending_filter.c; implicit only) */
+    double fabric_compression; /* the cloth's Model-II springs' stiffness in
+                                  compression over their stiffness (1: as
+                                  in tension) */
 
     double t;
     int acc_valid;      /* nodes.acc holds the last HHT step's acceleration */
@@ -230,5 +233,15 @@ static inline void canopy_triangle_area_normal(const double *x, const int *tri,
 /* Check a node / spring / triangle index; on failure sets the message. */
 canopy_status canopy_check_node(canopy_model *model, int node,
                                 const char *what);
+
+/* The factor on spring k's stiffness while it is shorter than its rest
+ * length: the cloth's compression ratio for its Model-II springs
+ * (canopy_model_set_fabric_compression), 1 for every other Model-II
+ * spring. Tension-only and Model-I springs are handled by their laws. */
+static inline double canopy_compression_factor(const canopy_model *m, int k)
+{
+    return m->springs.group[k] == CANOPY_GROUP_FABRIC ? m->fabric_compression
+                                                      : 1.0;
+}
 
 #endif /* CANOPY_MODEL_INTERNAL_H */

@@ -5,7 +5,8 @@
 #include <string.h>
 
 /* For a Model-II spring (seed 000 eq. 3.12) the tangent block is
- *   K_s = k [ e e^T + (1 - l0/l) (I - e e^T) ],
+ *   K_s = k [ e e^T + (1 - l0/l) (I - e e^T) ]
+ * (k times the compression factor while l < l0),
  * for Model-I K_s = k I, for a slack tension-only spring 0. The global K
  * couples i and j as [K_s, -K_s; -K_s, K_s]. With `clamp`, a negative
  * geometric factor (1 - l0/l) of a compressed spring is replaced by 0. */
@@ -37,6 +38,10 @@ void canopy_tangent_stiffness(const canopy_model *m, const double *x,
             double axial = 1.0;
             if (s->law[k] == CANOPY_SPRING_TENSION_ONLY && l <= s->rest[k])
                 axial = geo = 0.0;
+            if (s->law[k] == CANOPY_SPRING_MODEL_II && l < s->rest[k]) {
+                axial = canopy_compression_factor(m, k);
+                geo *= axial;
+            }
             if (clamp && geo < 0.0) geo = 0.0;
             const double ed = e[0] * du[0] + e[1] * du[1] + e[2] * du[2];
             for (int d = 0; d < 3; ++d)

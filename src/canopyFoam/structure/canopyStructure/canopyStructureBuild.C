@@ -635,6 +635,7 @@ void Foam::canopyStructure::build(const vector& defaultGravity)
     scalar bendingDamping = 0;
     word bendingDampingScheme("explicit");
     word bendingDampingFilter("none");
+    scalar compressionRatio = 1;
     if (const dictionary* d = top.optionalDict("fabric"))
     {
         const entryReader fr(*d, "fabric");
@@ -665,6 +666,20 @@ void Foam::canopyStructure::build(const vector& defaultGravity)
                 "highPass needs bendingDampingScheme implicit"
             );
         }
+        compressionRatio = fr.inRange
+        (
+            "compressionRatio",
+            "the springs' stiffness in compression over their stiffness",
+            0, 1, compressionRatio
+        );
+        if (fr.found("compressionRatio") && fabric.law != CANOPY_SPRING_MODEL_II)
+        {
+            fr.fail
+            (
+                "compressionRatio",
+                "needs law modelII (the law is " + lawName(fabric.law) + ")"
+            );
+        }
         if (const dictionary* pd = fr.optionalDict("porosity"))
         {
             const entryReader pr(*pd, "fabric.porosity");
@@ -678,7 +693,7 @@ void Foam::canopyStructure::build(const vector& defaultGravity)
             {
                 "arealDensity", "stiffness", "tensileStiffness", "damping",
                 "bendingDamping", "bendingDampingScheme",
-                "bendingDampingFilter", "law", "porosity"
+                "bendingDampingFilter", "compressionRatio", "law", "porosity"
             },
             ""
         );
@@ -997,6 +1012,11 @@ void Foam::canopyStructure::build(const vector& defaultGravity)
             m, bendingDampingFilter == "highPass"
         ),
         FUNCTION_NAME, "canopy_model_set_bending_damping_filter"
+    );
+    check
+    (
+        canopy_model_set_fabric_compression(m, compressionRatio),
+        FUNCTION_NAME, "canopy_model_set_fabric_compression"
     );
     check
     (
