@@ -157,13 +157,13 @@ canopy_status canopy_model_get_tensions(const canopy_model *model, double *T,
             stretch = l > 0.0 ? ((d[0] - r[0]) * d[0] + (d[1] - r[1]) * d[1] +
                                  (d[2] - r[2]) * d[2]) / l : 0.0;
         }
+        const double stiffness =
+            s->law[k] == CANOPY_SPRING_MODEL_II && stretch < 0.0
+                ? canopy_compression_factor(model, k) * s->k[k] : s->k[k];
         if (s->law[k] == CANOPY_SPRING_TENSION_ONLY && stretch <= 0.0)
             T[k] = 0.0;
-        else if (s->law[k] == CANOPY_SPRING_MODEL_II && stretch < 0.0)
-            T[k] = canopy_compression_factor(model, k) * s->k[k] * stretch +
-                   s->c[k] * rate;
         else
-            T[k] = s->k[k] * stretch + s->c[k] * rate;
+            T[k] = stiffness * stretch + s->c[k] * rate;
     }
     return CANOPY_OK;
 }
