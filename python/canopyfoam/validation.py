@@ -6,9 +6,15 @@ its Allrun; its Allrun writes postProcessing/report/report.json
 (bin/canopy-report). A study groups runs and says what they are compared
 with. `run` does the runs that have no complete result yet (a run is
 complete when its solver log ends with "End" and its report.json exists);
-`report` reads whatever runs are complete and writes the markdown and the
-plots; a run that is missing or failed is listed as such, with the command
-that makes it.
+`report` reads the runs and writes the markdown and the plots; a run that
+failed is listed as such.
+
+Every run read is recorded in docs/validation/runs/<run id>.json
+(validation_archive.py), which is committed: a run that is not in
+build/validation (another machine made it) is read from its record. A
+study with a run in neither place keeps its section of the previous
+report, marked as kept; a new study's missing run is listed with the
+command that makes it.
 
 Only the standard library and numpy are needed to run; matplotlib for the
 plots.
@@ -26,12 +32,14 @@ import time
 import numpy as np
 
 from . import report as rep
+from . import validation_archive as archive
 
 TOP = os.path.dirname(os.path.dirname(os.path.dirname(
     os.path.realpath(__file__))))
 RUN_ROOT = os.path.join(TOP, "build", "validation")
 DOC = os.path.join(TOP, "docs", "validation.md")
 FIG_DIR = os.path.join(TOP, "docs", "validation")
+ARCHIVE_DIR = os.path.join(FIG_DIR, "runs")
 
 
 class Run:
@@ -158,6 +166,16 @@ RUNS = [
         edits=[(PROPS, "fabric/bendingDampingFilter", "highPass"),
                (PROPS, "coupling/maxRelaxation", "0.5"),
                ("system/controlDict", "endTime", "8")],
+        reference="G11third"),
+    # A deeper fold on cells of half the size (8 times the cells): can the
+    # immersed boundary tell the folded layers apart there? (A 4 m lift
+    # stretched the finer cloth past canopyFold's maxStrain at 3.5 m.)
+    Run("G11-folded-3.5m-h0.475", G11_FOLDED,
+        "folded start, 3.5 m lift, cell 0.475 m, fabric edge 0.6 m, to 3 s",
+        ["-cellSize", "0.475"],
+        edits=[("system/canopyFoldDict", "duration", "7"),
+               (PROPS, "canopy/edgeLength", "0.6"),
+               ("system/controlDict", "endTime", "3")],
         reference="G11third"),
     Run("G11-folded-deep-highpass", G11_FOLDED,
         "folded start, twice the lift (4 m, 69 %), high-pass hinge dashpots",
@@ -444,14 +462,47 @@ def result(run):
     return r, state
 
 
+def record(run):
+    """(record, None) with what the report shows of a run, or (None, why
+    not). A run with a case in build/validation is read from it and its
+    record written to the archive (docs/validation/runs); a run without
+    one is read from the archive."""
+    state = run_state(run)
+    if state == "missing":
+        rec, why = archive.load(ARCHIVE_DIR, run)
+        if rec is not None:
+            return rec, None
+        _, text = result(run)
+        return None, text if why == "no record" else "%s; %s" % (text, why)
+    r, text = result(run)
+    analysis = None
+    if r is not None:
+        analysis = rep.json_ready(r)
+        for private in ("caseDir", "files"):    # this machine's paths
+            analysis.pop(private, None)
+        analysis["descentSeries"] = archive.thin_series(r["_series"].t,
+                                                        r["_descent"])
+    wall, ranks = wall_time(run.case_dir)
+    rec = {"state": text, "complete": state == "complete",
+           "codeVersion": run_code_version(run.case_dir), "wall": wall,
+           "ranks": ranks, "cells": cell_count(run.case_dir),
+           "analysis": analysis, "source": "run"}
+    archive.save(ARCHIVE_DIR, run, rec)
+    return rec, None
+
+
 def _f(x, fmt="%.3g"):
     return "—" if x is None or (isinstance(x, float) and
                                 not math.isfinite(x)) else fmt % x
 
 
-def run_row(run, r, state):
-    wall, ranks = wall_time(run.case_dir)
-    cells = cell_count(run.case_dir)
+def run_row(run, rec, why):
+    """The table row of a run from its record (or why there is none)."""
+    if rec is None:
+        return "| %s | %s | — | %s |  |  |  |  |  |" % (run.ident, run.label,
+                                                     why)
+    wall, ranks, cells = rec["wall"], rec["ranks"], rec["cells"]
+    r, state = rec["analysis"], rec["state"]
     if r is None:
         return "| %s | %s | %s | %s |  |  |  |  |  |" % (
             run.ident, run.label, _f(cells, "%d"), state)
@@ -493,10 +544,11 @@ def plot_study(name, title, runs_results, reference_lines=()):
     os.makedirs(FIG_DIR, exist_ok=True)
     fig, ax = plt.subplots(figsize=(8, 4.5))
     drawn = 0
-    for run, r in runs_results:
-        if r is None:
+    for run, rec in runs_results:
+        if rec is None or rec["analysis"] is None:
             continue
-        ax.plot(r["_series"].t, r["_descent"], lw=1.1, label=run.label)
+        series = rec["analysis"]["descentSeries"]
+        ax.plot(series["t"], series["v"], lw=1.1, label=run.label)
         drawn += 1
     for value, label, style in reference_lines:
         ax.axhline(value, color="k", ls=style, lw=1, label=label)
@@ -518,20 +570,21 @@ def plot_study(name, title, runs_results, reference_lines=()):
 def payload_scaling(runs_results):
     """Terminal velocity against total mass with V ∝ sqrt(M) (seed eq. 5.6)
     through the lightest complete run: lines for the markdown."""
-    pts = [(r["parameters"]["totalMass"]["value"],
-            r["descentVelocity"]["mean"], run, r) for run, r in runs_results
-           if r is not None]
+    pts = [(rec["analysis"]["parameters"]["totalMass"]["value"],
+            rec["analysis"]["descentVelocity"]["mean"], run, rec)
+           for run, rec in runs_results
+           if rec is not None and rec["analysis"] is not None]
     if len(pts) < 2:
         return ["Fewer than two complete runs: no scaling comparison yet."]
     pts.sort(key=lambda p: p[0])
     M0, V0, _, _ = pts[0]
     lines = ["| run | total mass [kg] | V [m/s] (interval) | V0 sqrt(M/M0) "
              "[m/s] | difference |", "|---|---|---|---|---|"]
-    for M, V, run, r in pts:
+    for M, V, run, rec in pts:
         pred = V0 * math.sqrt(M / M0)
-        s = r["steady"]
-        stopped = ("" if run_state(run) == "complete" else
-                   "; the run stopped at %.2f s" % r["timeEnd"])
+        s = rec["analysis"]["steady"]
+        stopped = ("" if rec["complete"] else
+                   "; the run stopped at %.2f s" % rec["analysis"]["timeEnd"])
         lines.append("| %s | %.1f | %.2f (%.3g–%.3g s%s) | %.2f | %+.0f %% |"
                      % (run.ident, M, V, s["start"], s["end"], stopped, pred,
                         100 * (V - pred) / pred))
@@ -672,6 +725,29 @@ def plot_structure(lines):
     return os.path.relpath(path, os.path.dirname(DOC))
 
 
+def previous_sections():
+    """{study title: its lines} of the report as it is now (the sections
+    between '## ' headings, the structure section excluded)."""
+    try:
+        with open(DOC) as f:
+            lines = f.read().split("\n")
+    except OSError:
+        return {}
+    sections, title = {}, None
+    for line in lines:
+        if line.startswith("## "):
+            title = line[3:].strip()
+            sections[title] = []
+        if title is not None:
+            sections[title].append(line)
+    for title, body in sections.items():
+        while body and (not body[-1].strip() or
+                        body[-1].startswith("(This section is kept")):
+            body.pop()
+        body.append("")
+    return sections
+
+
 def write_report():
     os.makedirs(os.path.dirname(DOC), exist_ok=True)
     # before the figures are rewritten (they would make the tree "dirty")
@@ -691,16 +767,27 @@ def write_report():
           "speed, W = ½ ρ V² S0 C_D. The definitions are those of "
           "`bin/canopy-report` (python/canopyfoam/report.py).",
           ""]
+    previous = previous_sections()
     for name, title, ids in STUDIES:
         runs = [RUN_BY_ID[i] for i in ids]
-        results = []
+        records = [(run,) + record(run) for run in runs]
+        absent = [run.ident for run, rec, _ in records if rec is None]
+        if absent and title in previous:
+            # the section as the last report had it, from runs made elsewhere
+            md += previous[title] + [
+                "(This section is kept from the previous report: %s %s "
+                "neither in build/validation nor in docs/validation/runs. "
+                "`bin/canopy-validate run %s` then `bin/canopy-validate "
+                "report` rewrites it.)" % (
+                    "the run" if len(absent) == 1 else "the runs",
+                    ", ".join(absent) + (" is" if len(absent) == 1 else
+                                         " are"), name), ""]
+            continue
+        results = [(run, rec) for run, rec, _ in records]
         md += ["## %s" % title, "", TABLE_HEAD]
-        for run in runs:
-            r, state = result(run)
-            results.append((run, r))
-            md.append(run_row(run, r, state))
-        made = [(run.ident, run_code_version(run.case_dir))
-                for run, r in results if r is not None]
+        md += [run_row(run, rec, why) for run, rec, why in records]
+        made = [(run.ident, rec["codeVersion"]) for run, rec in results
+                if rec is not None and rec["analysis"] is not None]
         md += ["", "Reproduce: `bin/canopy-validate run %s` then "
                "`bin/canopy-validate report`." % name, ""]
         if made:
@@ -711,8 +798,10 @@ def write_report():
                        " Runs made with another version may not match the "
                        "current code: re-run them."), ""]
         refs = []
-        done = [r["descentVelocity"]["mean"] for run, r in results
-                if r is not None and run_state(run) == "complete"]
+        done = [rec["analysis"]["descentVelocity"]["mean"]
+                for run, rec in results
+                if rec is not None and rec["complete"]
+                and rec["analysis"] is not None]
         if name in ("mesh7ft", "mesh7ftUndamped") and len(done) >= 2:
             spread = (max(done) - min(done)) / np.mean(done)
             md += ["Terminal velocities of the complete runs: %s m/s, a "
@@ -847,7 +936,11 @@ def main(argv=None):
             print("%s: %s" % (name, title))
             for i in ids:
                 run = RUN_BY_ID[i]
-                print("  %-16s %-9s %s" % (i, run_state(run), run.label))
+                state = run_state(run)
+                if state == "missing" and \
+                        archive.load(ARCHIVE_DIR, run)[0] is not None:
+                    state = "archived"
+                print("  %-16s %-9s %s" % (i, state, run.label))
         return 0
     if args.action == "report":
         write_report()
@@ -864,6 +957,7 @@ def main(argv=None):
             continue
         try:
             ok = execute(run, args.np) and ok
+            record(run)     # its record in docs/validation/runs
         except RuntimeError as e:
             print("canopy-validate: %s" % e, file=sys.stderr)
             ok = False

@@ -1,0 +1,156 @@
+"""test_validation_archive.py — the run records of bin/canopy-validate (python/canopyfoam/validation_archive.py): a run read once is reported from its record after its case is gone; a stale record and a missing run are not.
+
+Run as:  /usr/bin/python3 tests/python/test_validation_archive.py
+Prints one PASS/FAIL line per check; exits 1 if any fails.
+
+Uses the synthetic run of test_report.py (descent 4 m/s over its last
+third, 1200 steps) as the case of a validation run, in a temporary copy of
+the report's folders.
+"""
+
+import os
+import shutil
+import sys
+import tempfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, os.path.join(ROOT, "python"))
+sys.path.insert(0, HERE)
+
+from canopyfoam import validation as val  # noqa: E402
+from canopyfoam import validation_archive as archive  # noqa: E402
+import test_report as synthetic  # noqa: E402
+
+failures = []
+
+
+def check(name, ok, detail):
+    print("%s %s: %s" % ("PASS" if ok else "FAIL", name, detail))
+    if not ok:
+        failures.append(name)
+    return ok
+
+
+def make_case(case_dir):
+    """A complete run: the synthetic canopy.dat, a solver log ending in
+    End, a report.json, a wall time."""
+    synthetic.write_dat(os.path.join(case_dir, "postProcessing", "canopy",
+                                      "0", "canopy.dat"),
+                        synthetic.HEADER, synthetic.steps(1, 1200),
+                        synthetic.DOWN)
+    with open(os.path.join(case_dir, "log.canopyPimpleFoam"), "w") as f:
+        f.write("Time = 12\n\nEnd\n")
+    os.makedirs(os.path.dirname(val.report_json(case_dir)))
+    with open(val.report_json(case_dir), "w") as f:
+        f.write("{}\n")
+    with open(os.path.join(case_dir, "validation-wall-time"), "w") as f:
+        f.write("90.0 2\n")
+
+
+def use_tmp(tmp):
+    """Point the validation module at a scratch report and run folder."""
+    val.RUN_ROOT = os.path.join(tmp, "build", "validation")
+    val.FIG_DIR = os.path.join(tmp, "docs", "validation")
+    val.ARCHIVE_DIR = os.path.join(val.FIG_DIR, "runs")
+    val.DOC = os.path.join(tmp, "docs", "validation.md")
+
+
+def test_record_round_trip(tmp):
+    run = val.Run("synthetic", "parachutes/flatCircular7ft", "synthetic run")
+    make_case(run.case_dir)
+    rec, why = val.record(run)
+    path = archive.record_path(val.ARCHIVE_DIR, run.ident)
+    check("a read run is recorded", rec is not None and os.path.exists(path),
+          "record %s, why %s, file %s" % (rec is not None, why, path))
+    mean = rec["analysis"]["descentVelocity"]["mean"]
+    check("the record holds the analysis", abs(mean - 4.0) < 1e-5,
+          "mean descent %.7f m/s (synthetic: 4 - 5.6e-8)" % mean)
+    series = rec["analysis"]["descentSeries"]
+    check("the descent series is thinned to at most %d points"
+          % archive.SERIES_POINTS,
+          len(series["t"]) == archive.SERIES_POINTS
+          and series["t"][0] == 0.01 and series["t"][-1] == 12.0,
+          "%d points from %s to %s s (1200 steps)" % (
+              len(series["t"]), series["t"][0], series["t"][-1]))
+    text = open(path).read()
+    check("the record holds no path of this machine", tmp not in text,
+          "%s in the record: %s" % (tmp, tmp in text))
+
+    shutil.rmtree(run.case_dir)
+    again, why = val.record(run)
+    check("without its case the run is read from its record",
+          again is not None and again["source"] == "archive"
+          and again["analysis"]["descentVelocity"]["mean"] == mean
+          and again["complete"] and again["wall"] == 90.0
+          and again["ranks"] == 2,
+          "source %s, mean %s, why %s" % (
+              again and again["source"],
+              again and again["analysis"]["descentVelocity"]["mean"], why))
+
+    changed = val.Run("synthetic", "parachutes/flatCircular7ft",
+                      "synthetic run", edits=[("constant/canopyProperties",
+                                               "payload/mass", "10")])
+    stale, why = val.record(changed)
+    check("a record of another definition is not used",
+          stale is None and "earlier definition" in why, "why: %s" % why)
+    return run
+
+
+def test_report_keeps_and_rewrites(run):
+    missing = val.Run("never-run", "parachutes/flatCircular7ft",
+                      "a run made nowhere")
+    val.RUNS[:] = [run, missing]
+    val.RUN_BY_ID.clear()
+    val.RUN_BY_ID.update({r.ident: r for r in val.RUNS})
+    val.STUDIES[:] = [
+        ("fromRecord", "Study read from its record", ["synthetic"]),
+        ("keptStudy", "Study with a run made nowhere", ["never-run"]),
+        ("newStudy", "Study new to the report", ["never-run"])]
+    os.makedirs(os.path.dirname(val.DOC), exist_ok=True)
+    with open(val.DOC, "w") as f:
+        f.write("# Validation\n\n## Study with a run made nowhere\n\n"
+                "| never-run | measured elsewhere: 3.21 ± 0.04 |\n\n"
+                "## Study read from its record\n\nold text\n")
+    val.write_report()
+    doc = open(val.DOC).read()
+    kept = doc.split("## Study with a run made nowhere")[1].split("## ")[0]
+    check("a study with an unrecorded run keeps its previous section",
+          "measured elsewhere: 3.21 ± 0.04" in kept
+          and "kept from the previous report" in kept
+          and "never-run" in kept, kept.strip().replace("\n", " / "))
+    fresh = doc.split("## Study read from its record")[1].split("## ")[0]
+    check("a study whose runs are recorded is rewritten",
+          "old text" not in fresh and "| synthetic |" in fresh
+          and "4.00 ± 0.04" in fresh,
+          [line for line in fresh.split("\n") if "synthetic" in line][:1])
+    new = doc.split("## Study new to the report")[1].split("## ")[0]
+    check("a new study lists its missing run with the command",
+          "not run (`bin/canopy-validate run never-run`)" in new,
+          [line for line in new.split("\n") if "never-run" in line][:1])
+    check("the plot of a recorded study is drawn",
+          os.path.exists(os.path.join(val.FIG_DIR, "fromRecord.png")),
+          "docs/validation/fromRecord.png")
+
+
+def main():
+    tmp = tempfile.mkdtemp(prefix="canopy-validation-archive-")
+    try:
+        use_tmp(tmp)
+        run = test_record_round_trip(tmp)
+        test_report_keeps_and_rewrites(run)
+    except Exception as e:  # an unexpected error is a failure too
+        import traceback
+        traceback.print_exc()
+        failures.append("exception: %s" % e)
+    if failures:
+        print("FAIL: %d check(s) failed: %s; files kept in %s"
+              % (len(failures), ", ".join(failures), tmp))
+        return 1
+    shutil.rmtree(tmp, ignore_errors=True)
+    print("PASS: all validation archive checks")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
