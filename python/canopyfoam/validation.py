@@ -820,9 +820,13 @@ def write_report():
           "`bin/canopy-report` (python/canopyfoam/report.py).",
           ""]
     previous = previous_sections()
+    read = {}       # run id -> (record, why): a run is in several studies
     for name, title, ids in STUDIES:
         runs = [RUN_BY_ID[i] for i in ids]
-        records = [(run,) + record(run) for run in runs]
+        for run in runs:
+            if run.ident not in read:
+                read[run.ident] = record(run)
+        records = [(run,) + read[run.ident] for run in runs]
         absent = [run.ident for run, rec, _ in records if rec is None]
         if absent and title in previous:
             # the section as the last report had it, from runs made elsewhere
