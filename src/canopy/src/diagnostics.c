@@ -20,8 +20,7 @@ static double spring_energy(const canopy_model *m, int k)
     const double l = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
     double stretch = l - s->rest[k];                /* seed 000 eq. 2.14 */
     if (s->law[k] == CANOPY_SPRING_TENSION_ONLY && stretch < 0.0) stretch = 0.0;
-    const double factor = stretch < 0.0 ? canopy_compression_factor(m, k) : 1.0;
-    return 0.5 * factor * s->k[k] * stretch * stretch;
+    return 0.5 * canopy_spring_stiffness(m, k, stretch) * stretch * stretch;
 }
 
 canopy_status canopy_model_energies(const canopy_model *model,
@@ -157,13 +156,11 @@ canopy_status canopy_model_get_tensions(const canopy_model *model, double *T,
             stretch = l > 0.0 ? ((d[0] - r[0]) * d[0] + (d[1] - r[1]) * d[1] +
                                  (d[2] - r[2]) * d[2]) / l : 0.0;
         }
-        const double stiffness =
-            s->law[k] == CANOPY_SPRING_MODEL_II && stretch < 0.0
-                ? canopy_compression_factor(model, k) * s->k[k] : s->k[k];
         if (s->law[k] == CANOPY_SPRING_TENSION_ONLY && stretch <= 0.0)
             T[k] = 0.0;
         else
-            T[k] = stiffness * stretch + s->c[k] * rate;
+            T[k] = canopy_spring_stiffness(model, k, stretch) * stretch
+                 + s->c[k] * rate;
     }
     return CANOPY_OK;
 }

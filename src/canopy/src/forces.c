@@ -45,10 +45,8 @@ static void spring_forces(const canopy_model *m, const double *x,
         }
         default: {
             const double stretch = l - s->rest[k];
-            const double stiffness =
-                stretch < 0.0 ? s->k[k] * canopy_compression_factor(m, k)
-                              : s->k[k];
-            const double T = stiffness * stretch + s->c[k] * rate;
+            const double T = canopy_spring_stiffness(m, k, stretch) * stretch
+                           + s->c[k] * rate;
             fx = T * e0; fy = T * e1; fz = T * e2;
             break;
         }

@@ -244,4 +244,14 @@ static inline double canopy_compression_factor(const canopy_model *m, int k)
                                                       : 1.0;
 }
 
+/* Spring k's stiffness at the given stretch l - l0: k, times the
+ * compression factor for a compressed Model-II spring. */
+static inline double canopy_spring_stiffness(const canopy_model *m, int k,
+                                             double stretch)
+{
+    return stretch < 0.0 && m->springs.law[k] == CANOPY_SPRING_MODEL_II
+               ? canopy_compression_factor(m, k) * m->springs.k[k]
+               : m->springs.k[k];
+}
+
 #endif /* CANOPY_MODEL_INTERNAL_H */
