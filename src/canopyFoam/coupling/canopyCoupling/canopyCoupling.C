@@ -8,6 +8,8 @@
 #include "surfaceInterpolate.H"
 #include "canopy.h"
 #include "switchToken.H"
+#include "readChoice.H"
+#include "addedMassStabiliser.H"
 #include "treeDataCell.H"
 #include "indexedOctree.H"
 #include "pressureFaceGradient.H"
@@ -49,33 +51,6 @@ bool readSwitch
     return deflt;
 }
 
-
-// A word entry <name> (dict's key) that must be one of valid; the first
-// is the default; anything else stops naming the entry and the choices
-Foam::word readChoice
-(
-    const Foam::dictionary& dict,
-    const Foam::word& key,
-    const Foam::string& name,
-    const Foam::wordList& valid
-)
-{
-    using namespace Foam;
-    const word value(dict.getOrDefault<word>(key, valid[0]));
-    if (!valid.found(value))
-    {
-        OStringStream choices;
-        forAll(valid, i)
-        {
-            choices << (i ? " " : "") << valid[i];
-        }
-        FatalIOErrorInFunction(dict)
-            << "Entry '" << name.c_str() << "' = " << value
-            << " is not valid; valid: " << choices.str().c_str()
-            << exit(FatalIOError);
-    }
-    return value;
-}
 
 } // End anonymous namespace
 
@@ -540,30 +515,7 @@ Foam::canopyCoupling::canopyCoupling
             dict, "pressureJump", "coupling.pressureJump", {"sampled", "ibForce"}
         )
      == "ibForce";
-    const scalar addedMassDensity = dict.getOrDefault<scalar>("addedMass", 0);
-    if (!(addedMassDensity >= 0))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'coupling.addedMass' = " << addedMassDensity
-            << " must be >= 0 [kg/m^2]" << exit(FatalIOError);
-    }
-    if (addedMassDensity > 0)
-    {
-        // A third of each canopy triangle's area to each of its nodes
-        addedMass_.setSize(structure_.nNodes(), Zero);
-        const triFaceList tris(structure_.triangles());
-        const scalarField areas(structure_.triangleAreas());
-        forAll(tris, t)
-        {
-            for (const label node : tris[t])
-            {
-                addedMass_[node] += addedMassDensity*areas[t]/3;
-            }
-        }
-        meanAcceleration_.setSize(structure_.nNodes(), Zero);
-        addedMassDirection_.setSize(structure_.nNodes(), Zero);
-        stepStartVelocity_ = structure_.velocities();
-    }
+    addedMass_.reset(new addedMassStabiliser(dict, structure_));
 
     noSlip_ =
         readChoice(dict, "tangential", "coupling.tangential", {"noSlip", "free"})
@@ -752,34 +704,7 @@ void Foam::canopyCoupling::beginTimeStep()
     failure_.clear();
     structure_.checkpoint();
     frameOriginTime_ = structure_.time();
-    if (addedMass_.size())
-    {
-        stepStartVelocity_ = structure_.velocities();
-
-        // The air resists the cloth's motion along its normal: the added
-        // mass acts along the nodes' normals at the step's start
-        // (area-weighted over the adjacent triangles)
-        addedMassDirection_ = Zero;
-        const triFaceList tris(structure_.triangles());
-        const vectorField n(structure_.triangleNormals());
-        const scalarField areas(structure_.triangleAreas());
-        forAll(tris, t)
-        {
-            for (const label node : tris[t])
-            {
-                addedMassDirection_[node] += areas[t]*n[t];
-            }
-        }
-        forAll(addedMassDirection_, node)
-        {
-            const scalar len = mag(addedMassDirection_[node]);
-            if (len > VSMALL)
-            {
-                addedMassDirection_[node] /= len;
-            }
-        }
-        structure_.setDirectionalAddedMass(addedMass_, addedMassDirection_);
-    }
+    addedMass_->beginStep(structure_);
     markerForceStart_ = markerForceTotal_;
     acceleration_->reset();
     iteration_ = 0;
@@ -1002,20 +927,12 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
         sectionTimer timer(structureSeconds_);
         structure_.restore();
         structure_.setPressureJump(mk.triangleAverage(dpMarker));
-        if (addedMass_.size() || lineDrag_.valid())
+        if (addedMass_->active() || lineDrag_.valid())
         {
             vectorField nodal(structure_.nNodes(), Zero);
-            if (addedMass_.size())
+            if (addedMass_->active())
             {
-                // Added-mass stabiliser along the normal d:
-                // (m + m_a d d^T) a = F + m_a (d.abar) d, abar the
-                // mean acceleration of the last solve; at convergence abar
-                // is this step's own mean acceleration and the extra terms
-                // cancel on average over the step
-                nodal =
-                    addedMass_
-                   *(addedMassDirection_ & meanAcceleration_)
-                   *addedMassDirection_;
+                nodal = addedMass_->balancingForces();
             }
             if (lineDrag_.valid())
             {
@@ -1032,11 +949,9 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
         }
         advanced =
             structure_.tryAdvance(mesh_.time().deltaTValue(), substeps, message);
-        if (advanced && addedMass_.size())
+        if (advanced)
         {
-            meanAcceleration_ =
-                (structure_.velocities() - stepStartVelocity_)
-               /mesh_.time().deltaTValue();
+            addedMass_->update(structure_, mesh_.time().deltaTValue());
         }
     }
     if (!advanced)

@@ -1,0 +1,197 @@
+// Test-addedMassStabiliser.C: the coupling's added-mass stabiliser on a canopy without air (the inside of a fold): the first iteration's mean acceleration decides whether its vibration grows.
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | canopyFoam: parachute fluid-structure interaction
+   \\    /   O peration     | for OpenFOAM v1912
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of canopyFoam, a plugin for OpenFOAM, and like OpenFOAM
+    is distributed under the GNU General Public License version 3 or later.
+
+Application
+    Test-addedMassStabiliser
+
+Description
+    Builds the structure of constant/canopyProperties and its
+    addedMassStabiliser (the entries coupling.addedMass, > 0, and
+    coupling.addedMassPredictor) and advances it as the strong coupling
+    does, with no air: every time step a fixed number of iterations, each
+    restoring the step's start, setting the balancing forces m_a (d.abar) d
+    and advancing; no pressure jump. This is a cloth node inside a fold,
+    whose motion the air does not resist: the stabiliser's iteration then
+    converges only by m_a/(m + m_a) per iteration, and what is left
+    unconverged either acts as an inertia (predictor zero) or as a lag of
+    the acceleration behind the force (predictor lastStep), a negative
+    damping.
+
+    With gravity and a pinned skirt the cloth sags from rest, so that the
+    structure's total energy E (kinetic + springs + gravity) of the exact
+    motion never exceeds its start value E0 (the cloth's dashpots only take
+    energy out). Printed: E - E0, the kinetic energy and the fastest node
+    every tenth of the run, and the largest gain max(E - E0).
+
+    -expect stable: passes when every step advances and
+        max(E - E0) <= 0.01 max(KE): the inertia the unconverged part adds
+        (up to m_a on a node whose own mass is 70 times less) makes the
+        structure's own energy, which counts only m, swing below the
+        effective system's; it can exceed E0 only by the RK4 sub-steps'
+        error (~1e-4 per sub-step on the highest mode, dissipative) and the
+        change of the inertia from step to step: a gain of 1 % of the
+        largest kinetic energy is far above these and far below a growing
+        vibration.
+    -expect unstable: passes when the vibration grows: a step fails (a
+        node passes the structure's speed limit) or the largest gain
+        max(E - E0) exceeds the largest kinetic energy of the run's first
+        tenth.
+
+Usage
+    Test-addedMassStabiliser -expect stable|unstable [-iterations 6]
+        [-deltaT 0.02] [-endTime 2] [-case dir]
+
+\*---------------------------------------------------------------------------*/
+
+#include "argList.H"
+#include "Time.H"
+#include "IOdictionary.H"
+#include "IOmanip.H"
+#include "canopyStructure.H"
+#include "addedMassStabiliser.H"
+#include "testCheck.H"
+
+using namespace Foam;
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Advance a canopy without air with the coupling's added-mass"
+        " stabiliser and a fixed number of iterations per step; check that"
+        " its energy stays bounded (-expect stable) or grows"
+        " (-expect unstable)"
+    );
+    argList::noFunctionObjects();
+    argList::addOption("expect", "stable|unstable", "The expected outcome");
+    argList::addOption("iterations", "K", "Iterations per step (default 6)");
+    argList::addOption("deltaT", "dt", "Time step [s] (default 0.02)");
+    argList::addOption("endTime", "T", "Run length [s] (default 2)");
+
+    #include "setRootCase.H"
+    #include "createTime.H"
+
+    const word expect(args.getOrDefault<word>("expect", ""));
+    if (expect != "stable" && expect != "unstable")
+    {
+        FatalErrorInFunction
+            << "Option -expect must be stable or unstable, not '" << expect
+            << "'" << exit(FatalError);
+    }
+    const label nIterations = args.getOrDefault<label>("iterations", 6);
+    const scalar dt = args.getOrDefault<scalar>("deltaT", 0.02);
+    const scalar endTime = args.getOrDefault<scalar>("endTime", 2);
+    const label nSteps = label(endTime/dt + 0.5);
+
+    const IOdictionary props
+    (
+        IOobject
+        (
+            "canopyProperties", runTime.constant(), runTime,
+            IOobject::MUST_READ, IOobject::NO_WRITE, false
+        )
+    );
+    canopyStructure structure(runTime);
+    structure.setTime(0);
+    addedMassStabiliser stabiliser(props.subDict("coupling"), structure);
+    if (!stabiliser.active())
+    {
+        FatalIOErrorInFunction(props)
+            << "Entry 'coupling.addedMass' must be > 0 for this test"
+            << exit(FatalIOError);
+    }
+    const scalarField noJump(structure.nTriangles(), Zero);
+    const scalarField m(structure.masses());
+
+    Info<< "Canopy without air: " << structure.nNodes() << " nodes, "
+        << "total mass " << structure.totalMass() << " kg; predictor "
+        << props.subDict("coupling").getOrDefault<word>
+           ("addedMassPredictor", "zero")
+        << ", " << nIterations << " iterations per step, dt " << dt
+        << " s, " << nSteps << " steps" << nl << nl
+        << "        t [s]      E - E0 [J]      KE [J]   fastest node [m/s]"
+        << endl;
+
+    const scalar E0 = structure.energies().total;
+    scalar maxGain = 0, maxKinetic = 0, earlyKinetic = 0;
+    label stepsDone = 0;
+    string failure;
+    for (label step = 1; step <= nSteps && failure.empty(); ++step)
+    {
+        structure.checkpoint();
+        stabiliser.beginStep(structure);
+        for (label k = 0; k < nIterations; ++k)
+        {
+            structure.restore();
+            structure.setPressureJump(noJump);
+            structure.setNodalForces(stabiliser.balancingForces());
+            label subSteps = 0;
+            if (!structure.tryAdvance(dt, subSteps, failure))
+            {
+                break;
+            }
+            stabiliser.update(structure, dt);
+        }
+        if (!failure.empty())
+        {
+            break;
+        }
+        structure.commit();
+        ++stepsDone;
+
+        const canopyStructure::energy e(structure.energies());
+        maxGain = max(maxGain, e.total - E0);
+        maxKinetic = max(maxKinetic, e.kinetic);
+        if (step <= nSteps/10)
+        {
+            earlyKinetic = max(earlyKinetic, e.kinetic);
+        }
+        if (step % max(label(1), nSteps/10) == 0)
+        {
+            Info<< "    " << setw(9) << step*dt << "  " << setw(14)
+                << e.total - E0 << "  " << setw(10) << e.kinetic << "  "
+                << setw(12) << max(mag(structure.velocities())) << endl;
+        }
+    }
+
+    Info<< nl << "Steps advanced: " << stepsDone << " of " << nSteps;
+    if (!failure.empty())
+    {
+        Info<< "; stopped: " << failure.c_str();
+    }
+    Info<< nl << "Largest gain max(E - E0) = " << maxGain << " J, largest"
+        << " kinetic energy " << maxKinetic << " J (first tenth: "
+        << earlyKinetic << " J)" << nl << endl;
+
+    if (expect == "stable")
+    {
+        check("steps not advanced", scalar(nSteps - stepsDone), 0);
+        check
+        (
+            "max(E - E0)/max(KE)", maxGain/max(maxKinetic, VSMALL), 0.01
+        );
+    }
+    else
+    {
+        // Grows: a failed step, or a gain above the early kinetic energy
+        const scalar grown =
+            failure.empty() ? maxGain/max(earlyKinetic, VSMALL) : GREAT;
+        check("1/(the gain over the early kinetic energy)", 1/grown, 1);
+    }
+    Info<< nChecks - nFailed << " of " << nChecks << " checks passed" << endl;
+    return nFailed ? 1 : 0;
+}
+
+
+// ************************************************************************* //

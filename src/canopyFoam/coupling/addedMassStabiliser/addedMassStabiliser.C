@@ -1,0 +1,119 @@
+/*---------------------------------------------------------------------------*\
+    canopyFoam: addedMassStabiliser.C — the strong coupling's added-mass
+    stabiliser.
+\*---------------------------------------------------------------------------*/
+
+#include "addedMassStabiliser.H"
+#include "canopyStructure.H"
+#include "readChoice.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::addedMassStabiliser::addedMassStabiliser
+(
+    const dictionary& couplingDict,
+    const canopyStructure& structure
+)
+:
+    mass_(),
+    direction_(),
+    stepStartVelocity_(),
+    meanAcceleration_(),
+    fromLastStep_(false)
+{
+    const scalar density = couplingDict.getOrDefault<scalar>("addedMass", 0);
+    if (!(density >= 0))
+    {
+        FatalIOErrorInFunction(couplingDict)
+            << "Entry 'coupling.addedMass' = " << density
+            << " must be >= 0 [kg/m^2]" << exit(FatalIOError);
+    }
+    fromLastStep_ =
+        readChoice
+        (
+            couplingDict, "addedMassPredictor", "coupling.addedMassPredictor",
+            {"lastStep", "zero"}
+        )
+     == "lastStep";
+    if (density == 0)
+    {
+        return;
+    }
+
+    // A third of each canopy triangle's area to each of its nodes
+    mass_.setSize(structure.nNodes(), Zero);
+    const triFaceList tris(structure.triangles());
+    const scalarField areas(structure.triangleAreas());
+    forAll(tris, t)
+    {
+        for (const label node : tris[t])
+        {
+            mass_[node] += density*areas[t]/3;
+        }
+    }
+    direction_.setSize(structure.nNodes(), Zero);
+    meanAcceleration_.setSize(structure.nNodes(), Zero);
+    stepStartVelocity_ = structure.velocities();
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::addedMassStabiliser::beginStep(canopyStructure& structure)
+{
+    if (!active())
+    {
+        return;
+    }
+    stepStartVelocity_ = structure.velocities();
+    if (!fromLastStep_)
+    {
+        meanAcceleration_ = Zero;
+    }
+
+    // The added mass acts along the nodes' normals at the step's start
+    // (area-weighted over the adjacent triangles)
+    direction_ = Zero;
+    const triFaceList tris(structure.triangles());
+    const vectorField n(structure.triangleNormals());
+    const scalarField areas(structure.triangleAreas());
+    forAll(tris, t)
+    {
+        for (const label node : tris[t])
+        {
+            direction_[node] += areas[t]*n[t];
+        }
+    }
+    forAll(direction_, node)
+    {
+        const scalar len = mag(direction_[node]);
+        if (len > VSMALL)
+        {
+            direction_[node] /= len;
+        }
+    }
+    structure.setDirectionalAddedMass(mass_, direction_);
+}
+
+
+Foam::tmp<Foam::vectorField>
+Foam::addedMassStabiliser::balancingForces() const
+{
+    return mass_*(direction_ & meanAcceleration_)*direction_;
+}
+
+
+void Foam::addedMassStabiliser::update
+(
+    const canopyStructure& structure,
+    const scalar dt
+)
+{
+    if (active())
+    {
+        meanAcceleration_ = (structure.velocities() - stepStartVelocity_)/dt;
+    }
+}
+
+
+// ************************************************************************* //
