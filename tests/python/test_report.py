@@ -442,15 +442,12 @@ def test_references(tmp, case):
           "1.6-2 Hz" in summary, summary.replace("\n", " | "))
 
 
-def main():
-    tmp = tempfile.mkdtemp(prefix="canopy-report-")
+def run_checks(tmp, body, what):
+    """Run body() (the checks), count an unexpected error as a failure, and
+    print the verdict; tmp is removed when everything passed. Returns the
+    exit status."""
     try:
-        case, r = test_restarts_and_statistics(tmp)
-        test_half_bin_and_direction(tmp)
-        test_not_resolved(tmp)
-        test_missing_quantities(tmp)
-        test_command_line(tmp, case, r)
-        test_references(tmp, case)
+        body()
     except Exception as e:  # an unexpected error is a failure too
         import traceback
         traceback.print_exc()
@@ -460,8 +457,21 @@ def main():
               % (len(failures), ", ".join(failures), tmp))
         return 1
     shutil.rmtree(tmp, ignore_errors=True)
-    print("PASS: all report checks")
+    print("PASS: all %s checks" % what)
     return 0
+
+
+def main():
+    tmp = tempfile.mkdtemp(prefix="canopy-report-")
+
+    def body():
+        case, r = test_restarts_and_statistics(tmp)
+        test_half_bin_and_direction(tmp)
+        test_not_resolved(tmp)
+        test_missing_quantities(tmp)
+        test_command_line(tmp, case, r)
+        test_references(tmp, case)
+    return run_checks(tmp, body, "report")
 
 
 if __name__ == "__main__":

@@ -23,7 +23,7 @@ from canopyfoam import validation_archive as archive  # noqa: E402
 import test_report as synthetic  # noqa: E402
 
 check = synthetic.check         # PASS/FAIL lines, failures collected in
-failures = synthetic.failures   # test_report's list
+                                # test_report's list
 
 
 def make_case(case_dir):
@@ -129,21 +129,12 @@ def test_report_keeps_and_rewrites(run):
 
 def main():
     tmp = tempfile.mkdtemp(prefix="canopy-validation-archive-")
-    try:
+
+    def body():
         use_tmp(tmp)
         run = test_record_round_trip(tmp)
         test_report_keeps_and_rewrites(run)
-    except Exception as e:  # an unexpected error is a failure too
-        import traceback
-        traceback.print_exc()
-        failures.append("exception: %s" % e)
-    if failures:
-        print("FAIL: %d check(s) failed: %s; files kept in %s"
-              % (len(failures), ", ".join(failures), tmp))
-        return 1
-    shutil.rmtree(tmp, ignore_errors=True)
-    print("PASS: all validation archive checks")
-    return 0
+    return synthetic.run_checks(tmp, body, "validation archive")
 
 
 if __name__ == "__main__":

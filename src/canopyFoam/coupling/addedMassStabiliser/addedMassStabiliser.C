@@ -15,6 +15,7 @@ Foam::addedMassStabiliser::addedMassStabiliser
     const canopyStructure& structure
 )
 :
+    triangles_(),
     mass_(),
     direction_(),
     stepStartVelocity_(),
@@ -41,19 +42,18 @@ Foam::addedMassStabiliser::addedMassStabiliser
     }
 
     // A third of each canopy triangle's area to each of its nodes
+    triangles_ = structure.triangles();
     mass_.setSize(structure.nNodes(), Zero);
-    const triFaceList tris(structure.triangles());
     const scalarField areas(structure.triangleAreas());
-    forAll(tris, t)
+    forAll(triangles_, t)
     {
-        for (const label node : tris[t])
+        for (const label node : triangles_[t])
         {
             mass_[node] += density*areas[t]/3;
         }
     }
     direction_.setSize(structure.nNodes(), Zero);
     meanAcceleration_.setSize(structure.nNodes(), Zero);
-    stepStartVelocity_ = structure.velocities();
 }
 
 
@@ -74,12 +74,11 @@ void Foam::addedMassStabiliser::beginStep(canopyStructure& structure)
     // The added mass acts along the nodes' normals at the step's start
     // (area-weighted over the adjacent triangles)
     direction_ = Zero;
-    const triFaceList tris(structure.triangles());
     const vectorField n(structure.triangleNormals());
     const scalarField areas(structure.triangleAreas());
-    forAll(tris, t)
+    forAll(triangles_, t)
     {
-        for (const label node : tris[t])
+        for (const label node : triangles_[t])
         {
             direction_[node] += areas[t]*n[t];
         }
