@@ -62,7 +62,8 @@ Description
     - Chunks: time advances in chunks of at most
       min(0.05/zeta, 0.1 edge/|v0|, (T + relaxation)/nOutput), edge the
       mean rest length of the cloth springs; libcanopy sub-cycles each at
-      its stable step (canopyProperties' integrator and maxOmegaDt). The
+      its stable step (canopyProperties' integrator and maxOmegaDt, or the
+      entries integrator and maxOmegaDt here). The
       drive ends exactly at T.
     - Rest lengths are never changed: the folded canopy is stressed only
       where the fold left a spring longer or shorter than its flat length.
@@ -123,6 +124,8 @@ Usage
         nOutput            | states written after the flat one, >= 1 | no | 10
         holdPayload        | pin the payload during the fold       | no  | true
         maxStrain          | largest spring stretch (l - l0)/l0 allowed, > 0 | no | 0.1
+        integrator         | libcanopy integrator of the fold (e.g. rk4 when the run uses one large hht step) | no | canopyProperties' integrator.type
+        maxOmegaDt         | the fold's sub-step bound Lambda dt, > 0 | no | canopyProperties' integrator.maxOmegaDt
         output             | HDF5 file to write (ending in .h5), relative to the case | no | canopyProperties initialState, else constant/canopyInitialState.h5
     \endtable
 
@@ -323,6 +326,22 @@ public:
         fail(key, "must be a switch (true/false, on/off, yes/no), found " + is.toString());
     }
 
+    //- One of the words in 'choices'
+    word select(const word& key, const wordList& choices) const
+    {
+        std::string list;
+        for (const word& w : choices)
+        {
+            list += (list.empty() ? "" : " ") + w;
+        }
+        ITstream& is = stream(key, "one of " + list);
+        if (is.size() != 1 || !is[0].isWord() || !choices.found(is[0].wordToken()))
+        {
+            fail(key, "= " + is.toString() + " must be one of: " + list);
+        }
+        return is[0].wordToken();
+    }
+
     //- A file name ending in .h5
     fileName h5(const word& key) const
     {
@@ -372,6 +391,8 @@ struct foldControls
     label nOutput;
     bool holdPayload;
     scalar maxStrain;
+    word integrator;        // empty: canopyProperties'
+    scalar maxOmegaDt;      // <= 0: canopyProperties'
     fileName output;        // absolute
 };
 
@@ -426,6 +447,16 @@ foldControls readControls
     c.nOutput = top.integer("nOutput", "number of states written", 1, 10);
     c.holdPayload = top.flag("holdPayload", true);
     c.maxStrain = top.number("maxStrain", "largest spring stretch allowed", 0, true, 0.1);
+    if (top.found("integrator"))
+    {
+        wordList names(canopy_integrator_count());
+        forAll(names, i)
+        {
+            names[i] = word(canopy_integrator_name(i));
+        }
+        c.integrator = top.select("integrator", names);
+    }
+    c.maxOmegaDt = top.number("maxOmegaDt", "sub-step bound omega dt", 0, true, -1);
 
     if (top.found("output"))
     {
@@ -450,7 +481,8 @@ foldControls readControls
         wordList
         {
             "velocity", "duration", "region", "damping", "relaxation",
-            "nOutput", "holdPayload", "maxStrain", "output"
+            "nOutput", "holdPayload", "maxStrain", "integrator",
+            "maxOmegaDt", "output"
         }
     );
     return c;
@@ -620,6 +652,14 @@ int main(int argc, char *argv[])
 
     const double zero3[3] = {0, 0, 0};
     check(canopy_model_set_gravity(m, zero3), m, "set_gravity");  // g off
+    if (!c.integrator.empty())
+    {
+        check(canopy_model_set_integrator(m, c.integrator.c_str()), m, "set_integrator");
+    }
+    if (c.maxOmegaDt > 0)
+    {
+        check(canopy_model_set_max_omega_dt(m, c.maxOmegaDt), m, "set_max_omega_dt");
+    }
     // (pressure jumps are zero: nothing sets them)
     structure.setTime(0);
 

@@ -473,10 +473,11 @@ canopy_status canopy_model_set_added_mass(canopy_model *model,
  * normalised (3*n doubles); a zero direction makes that node's added mass
  * act in every direction, as set_added_mass. For a membrane in a fluid
  * (the air resists motion normal to the cloth, not along it). Replaces the
- * values of set_added_mass (which in turn clears the directions). Explicit
- * integrators only: advancing with an implicit one (newmark, hht, kang)
- * fails with CANOPY_ERR_STATE. The stable sub-step is bounded with the
- * smallest inertia, m_i alone. */
+ * values of set_added_mass (which in turn clears the directions). The
+ * explicit integrators, newmark and hht take it (the implicit ones solve
+ * with the full 3x3 inertia); advancing with kang, whose update assumes a
+ * scalar mass, fails with CANOPY_ERR_STATE. The stable sub-step is bounded
+ * with the smallest inertia, m_i alone. */
 canopy_status canopy_model_set_directional_added_mass(canopy_model *model,
                                                       const double *added_mass,
                                                       const double *direction,

@@ -101,16 +101,6 @@ void canopy_accelerations(const canopy_model *m, const double *x,
             a[3 * i] = a[3 * i + 1] = a[3 * i + 2] = 0.0;
             continue;
         }
-        const double inv = 1.0 / canopy_effective_mass(m, i);
-        if (canopy_added_mass_directional(m, i)) {
-            /* (m I + m_a d d^T)^-1 f = (f - m_a / (m + m_a) (d.f) d) / m */
-            const double *d = n->added_dir + 3 * i;
-            const double ma = n->added_mass[i];
-            const double s = ma / (n->mass[i] + ma) *
-                (d[0] * a[3 * i] + d[1] * a[3 * i + 1] + d[2] * a[3 * i + 2]);
-            a[3 * i] -= s * d[0]; a[3 * i + 1] -= s * d[1];
-            a[3 * i + 2] -= s * d[2];
-        }
-        a[3 * i] *= inv; a[3 * i + 1] *= inv; a[3 * i + 2] *= inv;
+        canopy_inertia_solve(m, i, a + 3 * i);
     }
 }

@@ -10,8 +10,9 @@
  *   x_{n+1} = x_n + dt v_n + dt^2 ((1/2 - beta) a_n + beta a_{n+1}),
  *   v_{n+1} = v_n + dt ((1 - gamma) a_n + gamma a_{n+1})   (seed 002 eqs. 25-26).
  * alpha = 0 is Newmark's average-acceleration rule (beta 1/4, gamma 1/2).
- * The unknown dx = x_{n+1} - x_n is found by Newton's method on the residual
- * above; each Newton correction solves
+ * M is the nodes' inertia, including a directional added mass
+ * m_i I + m_a d d^T. The unknown dx = x_{n+1} - x_n is found by Newton's
+ * method on the residual above; each Newton correction solves
  *   [M / (beta dt^2) + (1 + alpha)(K + gamma / (beta dt) C)] delta = -R
  * with Jacobi-preconditioned conjugate gradients, K the tangent stiffness
  * (compressive geometric terms dropped, so the matrix stays SPD: a
@@ -47,10 +48,11 @@ static void jacobian_apply(const canopy_model *m, const hht_coeffs *c,
             y[3 * i] = y[3 * i + 1] = y[3 * i + 2] = 0.0;
             continue;
         }
-        const double mi = canopy_effective_mass(m, i) * cm;
+        double mu[3];
+        canopy_inertia_apply(m, i, u + 3 * i, mu);
         for (int d = 0; d < 3; ++d) {
             const int k = 3 * i + d;
-            y[k] = mi * u[k] + (1.0 + c->alpha) * (y[k] + cd * tmp[k]);
+            y[k] = cm * mu[d] + (1.0 + c->alpha) * (y[k] + cd * tmp[k]);
         }
     }
 }
@@ -93,6 +95,50 @@ static int cg_solve(canopy_model *m, const hht_coeffs *c, const double *x,
     return -1;
 }
 
+/* The step's known and trial arrays (3n doubles each). */
+typedef struct hht_state {
+    const double *x0, *v0, *an, *Fn;
+    double *x1, *v1, *a1, *F1, *R;
+} hht_state;
+
+/* For the displacement dx = x_{n+1} - x_n (fixed nodes: dt v_n): x1, v1,
+ * a1, the forces F1 and the residual R = M a1 - (1 + alpha) F1 + alpha Fn
+ * (zero at fixed nodes). Returns |R| over the free nodes; *ma_norm = |M a1|. */
+static double hht_residual(const canopy_model *m, const hht_coeffs *c,
+                           const hht_state *s, const double *dx,
+                           double *ma_norm)
+{
+    const int n = m->nodes.count;
+    const double dt = c->dt;
+    for (int k = 0; k < 3 * n; ++k) {
+        s->x1[k] = s->x0[k] + dx[k];
+        s->a1[k] = (dx[k] - dt * s->v0[k] - dt * dt * (0.5 - c->beta) * s->an[k]) /
+                   (c->beta * dt * dt);
+        s->v1[k] = s->v0[k] + dt * ((1.0 - c->gamma) * s->an[k] + c->gamma * s->a1[k]);
+    }
+    for (int i = 0; i < n; ++i)
+        if (m->nodes.fixed[i])
+            for (int d = 0; d < 3; ++d) {
+                s->a1[3 * i + d] = 0.0;
+                s->v1[3 * i + d] = s->v0[3 * i + d];
+            }
+    canopy_forces(m, s->x1, s->v1, s->F1);
+    double ma2 = 0.0;
+    for (int i = 0; i < n; ++i) {
+        double inertia[3];
+        canopy_inertia_apply(m, i, s->a1 + 3 * i, inertia);
+        for (int d = 0; d < 3; ++d) {
+            const int k = 3 * i + d;
+            s->R[k] = m->nodes.fixed[i]
+                          ? 0.0
+                          : inertia[d] - (1.0 + c->alpha) * s->F1[k] + c->alpha * s->Fn[k];
+            if (!m->nodes.fixed[i]) ma2 += inertia[d] * inertia[d];
+        }
+    }
+    *ma_norm = sqrt(ma2);
+    return sqrt(dot_free(m, s->R, s->R));
+}
+
 static canopy_status hht_step(canopy_model *m, double dt, double alpha)
 {
     const int n = m->nodes.count, N = 3 * n;
@@ -110,11 +156,12 @@ static canopy_status hht_step(canopy_model *m, double dt, double alpha)
     canopy_forces(m, x0, v0, Fn);
     const int carried = alpha != 0.0 && m->acc_valid;
     for (int i = 0; i < n; ++i) {
-        const double inv = m->nodes.fixed[i] ? 0.0
-                                             : 1.0 / canopy_effective_mass(m, i);
+        double *a = an + 3 * i;
         for (int d = 0; d < 3; ++d)
-            an[3 * i + d] = carried ? (m->nodes.fixed[i] ? 0.0 : m->nodes.acc[3 * i + d])
-                                    : Fn[3 * i + d] * inv;
+            a[d] = m->nodes.fixed[i] ? 0.0
+                 : carried          ? m->nodes.acc[3 * i + d]
+                                    : Fn[3 * i + d];
+        if (!m->nodes.fixed[i] && !carried) canopy_inertia_solve(m, i, a);
     }
     /* Jacobi preconditioner from per-node stiffness and dashpot sums. */
     for (int k = 0; k < N; ++k) diag[k] = 0.0;
@@ -125,10 +172,16 @@ static canopy_status hht_step(canopy_model *m, double dt, double alpha)
         diag[3 * j] += w;
     }
     for (int i = 0; i < n; ++i) {
-        const double dg = canopy_effective_mass(m, i) / (c.beta * dt * dt) +
-                          (1.0 + alpha) * diag[3 * i];
-        diag[3 * i] = diag[3 * i + 1] = diag[3 * i + 2] =
-            m->nodes.fixed[i] ? 1.0 : dg;
+        /* the inertia's diagonal: m_i, plus m_a d_d^2 if directional */
+        const int directional = canopy_added_mass_directional(m, i);
+        const double *e = m->nodes.added_dir + 3 * i;
+        const double stiff = (1.0 + alpha) * diag[3 * i];
+        for (int d = 0; d < 3; ++d) {
+            const double md = canopy_effective_mass(m, i) +
+                (directional ? m->nodes.added_mass[i] * e[d] * e[d] : 0.0);
+            diag[3 * i + d] =
+                m->nodes.fixed[i] ? 1.0 : md / (c.beta * dt * dt) + stiff;
+        }
     }
     /* Predictor: dx = dt v_n + dt^2/2 a_n (fixed nodes: dt v_n, exact). */
     for (int k = 0; k < N; ++k) dx[k] = dt * v0[k] + 0.5 * dt * dt * an[k];
@@ -143,36 +196,12 @@ static canopy_status hht_step(canopy_model *m, double dt, double alpha)
     gscale = sqrt(gscale);
     const double Fn_norm = sqrt(dot_free(m, Fn, Fn));
 
-    double res = INFINITY, scale = 0.0;
+    const hht_state st = {x0, v0, an, Fn, x1, v1, a1, F1, R};
+    double ma_norm = 0.0;
+    double res = hht_residual(m, &c, &st, dx, &ma_norm), scale = 0.0;
     int stagnated = 0;
     for (int it = 0; it <= m->implicit_max_iter; ++it) {
-        for (int k = 0; k < N; ++k) {
-            x1[k] = x0[k] + dx[k];
-            a1[k] = (dx[k] - dt * v0[k] - dt * dt * (0.5 - c.beta) * an[k]) /
-                    (c.beta * dt * dt);
-            v1[k] = v0[k] + dt * ((1.0 - c.gamma) * an[k] + c.gamma * a1[k]);
-        }
-        for (int i = 0; i < n; ++i)
-            if (m->nodes.fixed[i])
-                for (int d = 0; d < 3; ++d) {
-                    a1[3 * i + d] = 0.0;
-                    v1[3 * i + d] = v0[3 * i + d];
-                }
-        canopy_forces(m, x1, v1, F1);
-        double ma2 = 0.0;
-        for (int i = 0; i < n; ++i) {
-            const double mi = canopy_effective_mass(m, i);
-            for (int d = 0; d < 3; ++d) {
-                const int k = 3 * i + d;
-                const double ma = mi * a1[k];
-                R[k] = m->nodes.fixed[i]
-                           ? 0.0
-                           : ma - (1.0 + alpha) * F1[k] + alpha * Fn[k];
-                if (!m->nodes.fixed[i]) ma2 += ma * ma;
-            }
-        }
-        res = sqrt(dot_free(m, R, R));
-        scale = sqrt(ma2) + sqrt(dot_free(m, F1, F1)) + Fn_norm + gscale;
+        scale = ma_norm + sqrt(dot_free(m, F1, F1)) + Fn_norm + gscale;
         if (!isfinite(res)) break;
         if (res <= m->implicit_tol * scale || stagnated) {
             for (int k = 0; k < N; ++k) {
@@ -190,14 +219,23 @@ static canopy_status hht_step(canopy_model *m, double dt, double alpha)
                                "%s: conjugate gradients did not converge "
                                "(dt %g, Newton iteration %d)",
                                alpha == 0.0 ? "newmark" : "hht", dt, it);
-        for (int i = 0; i < n; ++i)
-            if (!m->nodes.fixed[i])
-                for (int d = 0; d < 3; ++d) dx[3 * i + d] += delta[3 * i + d];
+        /* Backtracking: the correction scaled by s = 1, 1/2, ... 1/64, the
+         * first that lowers the residual (else the smallest). The tangent
+         * leaves out the compressed springs' geometric stiffness, so on
+         * crumpled cloth over a long step a full correction can overshoot. */
+        const double res_old = res;
+        double s_used = 0.0;
+        for (double s = 1.0; s >= 1.0 / 64.0; s *= 0.5) {
+            for (int k = 0; k < N; ++k) dx[k] += (s - s_used) * delta[k];
+            s_used = s;
+            res = hht_residual(m, &c, &st, dx, &ma_norm);
+            if (res < res_old) break;
+        }
         /* A correction at the round-off level of the displacement or of the
          * positions themselves means the residual cannot fall further (it
          * divides dx by beta dt^2, and forces near rest are tiny): accept
          * after this last update. */
-        const double dnorm = sqrt(dot_free(m, delta, delta));
+        const double dnorm = s_used * sqrt(dot_free(m, delta, delta));
         if (dnorm <= m->implicit_tol * 1e-3 * sqrt(dot_free(m, dx, dx)) ||
             dnorm <= 4.0 * DBL_EPSILON * sqrt(dot_free(m, x1, x1)))
             stagnated = 1;

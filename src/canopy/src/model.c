@@ -378,10 +378,12 @@ canopy_status canopy_model_prepare(canopy_model *model)
             return canopy_fail(model, CANOPY_ERR_STATE,
                                "node %d is free but has zero mass", i);
     }
-    if (model->directional_added_mass && model->integrator->implicit)
+    if (model->directional_added_mass &&
+        model->integrator == &canopy_integrator_kang)
         return canopy_fail(model, CANOPY_ERR_STATE,
                            "a directional added mass (set_directional_added_"
-                           "mass) needs an explicit integrator, not '%s'",
+                           "mass) needs an explicit integrator, newmark or "
+                           "hht, not '%s'",
                            model->integrator->name);
     if (model->work_nodes != n->count) {
         free_work(model);

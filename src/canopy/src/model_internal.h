@@ -211,6 +211,37 @@ static inline double canopy_effective_mass(const canopy_model *m, int i)
          + (canopy_added_mass_directional(m, i) ? 0.0 : m->nodes.added_mass[i]);
 }
 
+/* y = M_i u for node i's inertia M_i = m_i I + m_a d d^T (directional added
+ * mass) or (m_i + m_a) I; u, y: 3 doubles. */
+static inline void canopy_inertia_apply(const canopy_model *m, int i,
+                                        const double *u, double *y)
+{
+    const double mi = canopy_effective_mass(m, i);
+    y[0] = mi * u[0]; y[1] = mi * u[1]; y[2] = mi * u[2];
+    if (canopy_added_mass_directional(m, i)) {
+        const double *d = m->nodes.added_dir + 3 * i;
+        const double s = m->nodes.added_mass[i] *
+                         (d[0] * u[0] + d[1] * u[1] + d[2] * u[2]);
+        y[0] += s * d[0]; y[1] += s * d[1]; y[2] += s * d[2];
+    }
+}
+
+/* f <- M_i^-1 f for node i (Sherman-Morrison for the directional added
+ * mass: (m I + m_a d d^T)^-1 f = (f - m_a / (m + m_a) (d.f) d) / m). */
+static inline void canopy_inertia_solve(const canopy_model *m, int i,
+                                        double *f)
+{
+    if (canopy_added_mass_directional(m, i)) {
+        const double *d = m->nodes.added_dir + 3 * i;
+        const double ma = m->nodes.added_mass[i];
+        const double s = ma / (m->nodes.mass[i] + ma) *
+                         (d[0] * f[0] + d[1] * f[1] + d[2] * f[2]);
+        f[0] -= s * d[0]; f[1] -= s * d[1]; f[2] -= s * d[2];
+    }
+    const double inv = 1.0 / canopy_effective_mass(m, i);
+    f[0] *= inv; f[1] *= inv; f[2] *= inv;
+}
+
 /* State copies. */
 canopy_status canopy_state_save(canopy_model *model, canopy_state_copy *copy);
 void canopy_state_load(canopy_model *model, const canopy_state_copy *copy);

@@ -19,8 +19,9 @@ Foam::addedMassStabiliser::addedMassStabiliser
     mass_(),
     direction_(),
     stepStartVelocity_(),
-    meanAcceleration_(),
-    fromLastStep_(false)
+    balanceAcceleration_(),
+    fromLastStep_(false),
+    endOfStep_(false)
 {
     const scalar density = couplingDict.getOrDefault<scalar>("addedMass", 0);
     if (!(density >= 0))
@@ -36,6 +37,22 @@ Foam::addedMassStabiliser::addedMassStabiliser
             {"lastStep", "zero"}
         )
      == "lastStep";
+    endOfStep_ =
+        readChoice
+        (
+            couplingDict, "addedMassBalance", "coupling.addedMassBalance",
+            {"stepMean", "endOfStep"}
+        )
+     == "endOfStep";
+    const word integrator(structure.integrator());
+    if (endOfStep_ && integrator != "hht" && integrator != "newmark")
+    {
+        FatalIOErrorInFunction(couplingDict)
+            << "Entry 'coupling.addedMassBalance' = endOfStep needs the "
+            << "structure's integrator.type hht or newmark (an implicit "
+            << "integrator, which keeps the acceleration it ends a step "
+            << "with), not " << integrator << exit(FatalIOError);
+    }
     if (density == 0)
     {
         return;
@@ -53,7 +70,7 @@ Foam::addedMassStabiliser::addedMassStabiliser
         }
     }
     direction_.setSize(structure.nNodes(), Zero);
-    meanAcceleration_.setSize(structure.nNodes(), Zero);
+    balanceAcceleration_.setSize(structure.nNodes(), Zero);
 }
 
 
@@ -68,7 +85,7 @@ void Foam::addedMassStabiliser::beginStep(canopyStructure& structure)
     stepStartVelocity_ = structure.velocities();
     if (!fromLastStep_)
     {
-        meanAcceleration_ = Zero;
+        balanceAcceleration_ = Zero;
     }
 
     // The added mass acts along the nodes' normals at the step's start
@@ -98,7 +115,7 @@ void Foam::addedMassStabiliser::beginStep(canopyStructure& structure)
 Foam::tmp<Foam::vectorField>
 Foam::addedMassStabiliser::balancingForces() const
 {
-    return mass_*(direction_ & meanAcceleration_)*direction_;
+    return mass_*(direction_ & balanceAcceleration_)*direction_;
 }
 
 
@@ -108,9 +125,17 @@ void Foam::addedMassStabiliser::update
     const scalar dt
 )
 {
-    if (active())
+    if (!active())
     {
-        meanAcceleration_ = (structure.velocities() - stepStartVelocity_)/dt;
+        return;
+    }
+    if (endOfStep_)
+    {
+        balanceAcceleration_ = structure.accelerationState();
+    }
+    else
+    {
+        balanceAcceleration_ = (structure.velocities() - stepStartVelocity_)/dt;
     }
 }
 

@@ -270,6 +270,26 @@ Foam::tmp<Foam::vectorField> Foam::canopyStructure::velocities() const
 }
 
 
+Foam::tmp<Foam::vectorField> Foam::canopyStructure::accelerationState() const
+{
+    auto tfld = tmp<vectorField>::New(nNodes(), Zero);
+    int valid = 0;
+    check
+    (
+        canopy_model_get_acceleration_state
+        (
+            model_.get(), raw(tfld.ref()), nNodes(), &valid
+        ),
+        FUNCTION_NAME, "canopy_model_get_acceleration_state"
+    );
+    if (!valid)
+    {
+        tfld.ref() = Zero;
+    }
+    return tfld;
+}
+
+
 Foam::tmp<Foam::scalarField> Foam::canopyStructure::masses() const
 {
     auto tfld = tmp<scalarField>::New(nNodes());
