@@ -87,15 +87,7 @@ static void apply_mass(const canopy_model *m, const double *w, double *y)
             yi[0] = yi[1] = yi[2] = 0.0;
             continue;
         }
-        const double ma = n->added_mass[i];
-        if (canopy_added_mass_directional(m, i)) {
-            const double *e = n->added_dir + 3 * i;
-            const double s = ma * (e[0] * wi[0] + e[1] * wi[1] + e[2] * wi[2]);
-            for (int d = 0; d < 3; ++d)
-                yi[d] = n->mass[i] * wi[d] + s * e[d];
-        } else {
-            for (int d = 0; d < 3; ++d) yi[d] = (n->mass[i] + ma) * wi[d];
-        }
+        canopy_inertia_apply(m, i, wi, yi);
     }
 }
 
@@ -104,12 +96,10 @@ static void diagonal(canopy_model *m, double h, double *diag)
 {
     const canopy_nodes *n = &m->nodes;
     for (int i = 0; i < n->count; ++i) {
-        const double ma = n->added_mass[i];
-        const int directional = canopy_added_mass_directional(m, i);
-        const double *e = n->added_dir + 3 * i;
-        for (int d = 0; d < 3; ++d)
-            diag[3 * i + d] = n->fixed[i] ? 1.0
-                            : n->mass[i] + (directional ? ma * e[d] * e[d] : ma);
+        if (n->fixed[i])
+            diag[3 * i] = diag[3 * i + 1] = diag[3 * i + 2] = 1.0;
+        else
+            canopy_inertia_diagonal(m, i, diag + 3 * i);
     }
     for (int k = 0; k < m->hinges.count; ++k) {
         const double *u = m->hinges.modes + 13 * k;

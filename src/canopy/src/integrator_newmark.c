@@ -172,16 +172,12 @@ static canopy_status hht_step(canopy_model *m, double dt, double alpha)
         diag[3 * j] += w;
     }
     for (int i = 0; i < n; ++i) {
-        /* the inertia's diagonal: m_i, plus m_a d_d^2 if directional */
-        const int directional = canopy_added_mass_directional(m, i);
-        const double *e = m->nodes.added_dir + 3 * i;
+        double md[3];
+        canopy_inertia_diagonal(m, i, md);
         const double stiff = (1.0 + alpha) * diag[3 * i];
-        for (int d = 0; d < 3; ++d) {
-            const double md = canopy_effective_mass(m, i) +
-                (directional ? m->nodes.added_mass[i] * e[d] * e[d] : 0.0);
+        for (int d = 0; d < 3; ++d)
             diag[3 * i + d] =
-                m->nodes.fixed[i] ? 1.0 : md / (c.beta * dt * dt) + stiff;
-        }
+                m->nodes.fixed[i] ? 1.0 : md[d] / (c.beta * dt * dt) + stiff;
     }
     /* Predictor: dx = dt v_n + dt^2/2 a_n (fixed nodes: dt v_n, exact). */
     for (int k = 0; k < N; ++k) dx[k] = dt * v0[k] + 0.5 * dt * dt * an[k];

@@ -226,6 +226,18 @@ static inline void canopy_inertia_apply(const canopy_model *m, int i,
     }
 }
 
+/* The diagonal of node i's inertia M_i (3 doubles): m_i + m_a d_k^2 for a
+ * directional added mass, else m_i + m_a. */
+static inline void canopy_inertia_diagonal(const canopy_model *m, int i,
+                                           double *diag)
+{
+    const double ma = m->nodes.added_mass[i];
+    const int directional = canopy_added_mass_directional(m, i);
+    const double *d = m->nodes.added_dir + 3 * i;
+    for (int k = 0; k < 3; ++k)
+        diag[k] = m->nodes.mass[i] + (directional ? ma * d[k] * d[k] : ma);
+}
+
 /* f <- M_i^-1 f for node i (Sherman-Morrison for the directional added
  * mass: (m I + m_a d d^T)^-1 f = (f - m_a / (m + m_a) (d.f) d) / m). */
 static inline void canopy_inertia_solve(const canopy_model *m, int i,
