@@ -105,8 +105,11 @@ typedef enum canopy_group {
  * MODEL_II     f_i = -k (l - l0) e_ij             seed 000 eq. 2.18 (fabric)
  * MODEL_I      f_i = -k ((x_i - x_j) - d0_ij)     seed 000 eq. 2.17, d0_ij the
  *              rest vector: linear, with bending stiffness; for analysis only.
- * TENSION_ONLY f_i = -k max(l - l0, 0) e_ij       a compression-free cloth or
- *              line: no force (and no damping) while slack.
+ * TENSION_ONLY f_i = -T e_ij, T = max(0, k (l - l0) + c dl/dt): a
+ *              compression-free cloth or line; its spring and dashpot
+ *              together never push (no force while slack, save that the
+ *              dashpot engages (c/k) dl/dt before the line is taut, which
+ *              keeps T continuous for the implicit integrators).
  * Every spring may carry a dashpot c acting on the relative velocity of its
  * two ends along the spring, f_i = c ((v_j - v_i)·e) e: internal impulse only
  * (the seed's impulse method, seed 000 §2.9), so rigid motion is undamped. */

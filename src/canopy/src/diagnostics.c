@@ -156,8 +156,8 @@ canopy_status canopy_model_get_tensions(const canopy_model *model, double *T,
             stretch = l > 0.0 ? ((d[0] - r[0]) * d[0] + (d[1] - r[1]) * d[1] +
                                  (d[2] - r[2]) * d[2]) / l : 0.0;
         }
-        if (s->law[k] == CANOPY_SPRING_TENSION_ONLY && stretch <= 0.0)
-            T[k] = 0.0;
+        if (s->law[k] == CANOPY_SPRING_TENSION_ONLY)
+            T[k] = canopy_line_tension(s->k[k], s->c[k], stretch, rate);
         else
             T[k] = canopy_spring_stiffness(model, k, stretch) * stretch
                  + s->c[k] * rate;

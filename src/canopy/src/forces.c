@@ -9,8 +9,8 @@
  *   Model-II      f_i = +k (l - l0) e           (seed 000 eq. 2.18), with
  *                 k times the cloth's compression ratio r while l < l0
  *   Model-I       f_i = +k (d - d0)             (seed 000 eq. 2.17)
- *   tension-only  f_i = +k max(l - l0, 0) e
- * plus the dashpot f_i = +c ((v_j - v_i).e) e; f_j = -f_i. */
+ *   tension-only  f_i = +max(0, k (l - l0) + c dl/dt) e (canopy_line_tension)
+ * plus, for the others, the dashpot f_i = +c ((v_j - v_i).e) e; f_j = -f_i. */
 static void spring_forces(const canopy_model *m, const double *x,
                           const double *v, double *f)
 {
@@ -37,9 +37,8 @@ static void spring_forces(const canopy_model *m, const double *x,
             break;
         }
         case CANOPY_SPRING_TENSION_ONLY: {
-            const double stretch = l - s->rest[k];
-            const double T = stretch > 0.0 ? s->k[k] * stretch + s->c[k] * rate
-                                           : 0.0;
+            const double T = canopy_line_tension(s->k[k], s->c[k],
+                                                 l - s->rest[k], rate);
             fx = T * e0; fy = T * e1; fz = T * e2;
             break;
         }

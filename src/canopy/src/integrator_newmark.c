@@ -33,14 +33,14 @@ static double dot_free(const canopy_model *m, const double *a, const double *b)
     return s;
 }
 
-/* y = J u at positions x. tmp: scratch. */
+/* y = J u at positions x, velocities v. tmp: scratch. */
 static void jacobian_apply(const canopy_model *m, const hht_coeffs *c,
-                           const double *x, const double *u, double *y,
-                           double *tmp)
+                           const double *x, const double *v, const double *u,
+                           double *y, double *tmp)
 {
     const int n = m->nodes.count;
-    canopy_tangent_stiffness(m, x, u, y, 1);
-    canopy_tangent_damping(m, x, u, tmp);
+    canopy_tangent_stiffness(m, x, v, u, y, 1);
+    canopy_tangent_damping(m, x, v, u, tmp);
     const double cd = c->gamma / (c->beta * c->dt);
     const double cm = 1.0 / (c->beta * c->dt * c->dt);
     for (int i = 0; i < n; ++i) {
@@ -60,7 +60,7 @@ static void jacobian_apply(const canopy_model *m, const hht_coeffs *c,
 /* Solve J delta = rhs by preconditioned CG to relative tolerance rtol.
  * Returns the iterations used, or -1 if not converged. */
 static int cg_solve(canopy_model *m, const hht_coeffs *c, const double *x,
-                    const double *rhs, double *delta, const double *diag,
+                    const double *v, const double *rhs, double *delta, const double *diag,
                     double rtol)
 {
     const int N = 3 * m->nodes.count;
@@ -77,7 +77,7 @@ static int cg_solve(canopy_model *m, const hht_coeffs *c, const double *x,
     double rz = dot_free(m, r, z);
     const int max_it = N < 2000 ? N + 20 : 2000 + N / 10;
     for (int it = 1; it <= max_it; ++it) {
-        jacobian_apply(m, c, x, p, Ap, tmp);
+        jacobian_apply(m, c, x, v, p, Ap, tmp);
         const double pAp = dot_free(m, p, Ap);
         if (!(pAp > 0.0)) return -1;
         const double a = rz / pAp;
@@ -210,7 +210,7 @@ static canopy_status hht_step(canopy_model *m, double dt, double alpha)
         }
         if (it == m->implicit_max_iter) break;
         for (int k = 0; k < N; ++k) R[k] = -R[k];
-        if (cg_solve(m, &c, x1, R, delta, diag, 1e-6) < 0)
+        if (cg_solve(m, &c, x1, v1, R, delta, diag, 1e-6) < 0)
             return canopy_fail(m, CANOPY_ERR_NOT_CONVERGED,
                                "%s: conjugate gradients did not converge "
                                "(dt %g, Newton iteration %d)",

@@ -190,12 +190,14 @@ void canopy_accelerations(const canopy_model *model, const double *x,
                           const double *v, double *a);
 /* y = K u (tangent stiffness at x, 3*n). With clamp, the geometric term of
  * compressed springs is dropped so K stays positive semi-definite. Fixed
- * nodes' rows and columns are zero. */
+ * nodes' rows and columns are zero. v (may be NULL: the dashpots count as
+ * idle) tells which lines carry tension (canopy_line_tension). */
 void canopy_tangent_stiffness(const canopy_model *model, const double *x,
-                              const double *u, double *y, int clamp);
-/* y = C u (dashpot tangent at x). */
+                              const double *v, const double *u, double *y,
+                              int clamp);
+/* y = C u (dashpot tangent at x, velocities v as above). */
 void canopy_tangent_damping(const canopy_model *model, const double *x,
-                            const double *u, double *y);
+                            const double *v, const double *u, double *y);
 /* Does node i's added mass act along one direction only? */
 static inline int canopy_added_mass_directional(const canopy_model *m, int i)
 {
@@ -295,6 +297,21 @@ static inline double canopy_spring_stiffness(const canopy_model *m, int k,
     return stretch < 0.0 && m->springs.law[k] == CANOPY_SPRING_MODEL_II
                ? canopy_compression_factor(m, k) * m->springs.k[k]
                : m->springs.k[k];
+}
+
+/* Tension of a tension-only spring (a line) with stiffness k, dashpot c,
+ * stretch l - l0 and stretch rate dl/dt: its spring-dashpot force clipped
+ * at zero, T = max(0, k (l - l0) + c dl/dt). A line never pushes, and T is
+ * continuous in l and dl/dt, so an implicit step's residual has no jump where
+ * a line goes taut (with the dashpot switched on at l = l0, Newton cycles
+ * there). The dashpot engages up to (c/k) dl/dt before the line is taut: the
+ * distance its ends cover in the damping time c/k, about 2e-5 s for the
+ * tutorials' lines. Without a dashpot, T = k max(l - l0, 0). */
+static inline double canopy_line_tension(double k, double c, double stretch,
+                                         double rate)
+{
+    const double T = k * stretch + c * rate;
+    return T > 0.0 ? T : 0.0;
 }
 
 #endif /* CANOPY_MODEL_INTERNAL_H */

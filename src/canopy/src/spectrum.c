@@ -25,7 +25,7 @@ static void apply_S(const canopy_model *m, const lanczos_space *sp,
     for (int f = 0; f < sp->nfree; ++f)
         for (int d = 0; d < 3; ++d)
             sp->full_in[3 * sp->free_nodes[f] + d] = q[3 * f + d] * sp->inv_sqrt_m[f];
-    canopy_tangent_stiffness(m, m->nodes.x, sp->full_in, sp->full_out, 0);
+    canopy_tangent_stiffness(m, m->nodes.x, NULL, sp->full_in, sp->full_out, 0);
     for (int f = 0; f < sp->nfree; ++f)
         for (int d = 0; d < 3; ++d)
             out[3 * f + d] = sp->full_out[3 * sp->free_nodes[f] + d] * sp->inv_sqrt_m[f];
