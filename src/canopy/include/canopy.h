@@ -450,9 +450,11 @@ canopy_status canopy_model_stable_step(canopy_model *model, double *dt);
 
 /* Exactly one step of the selected integrator with step dt > 0. */
 canopy_status canopy_model_step(canopy_model *model, double dt);
-/* Advance by dt, sub-cycling in n = ceil(dt / stable step) equal sub-steps
- * (*substeps_out, may be NULL). On any failure the state is exactly as it was
- * before the call. */
+/* Advance by dt, sub-cycling in n = ceil(dt / stable step) equal sub-steps.
+ * With an implicit integrator a sub-step whose Newton solve does not
+ * converge is taken again as two halves, and so on down to 1/16 of it.
+ * *substeps_out (may be NULL) receives the sub-steps taken. On any failure
+ * the state is exactly as it was before the call. */
 canopy_status canopy_model_advance(canopy_model *model, double dt,
                                    int *substeps_out);
 

@@ -110,6 +110,30 @@ canopy_status canopy_model_step(canopy_model *model, double dt)
     return CANOPY_OK;
 }
 
+/* How many times an implicit sub-step whose Newton solve failed is halved
+ * before canopy_model_advance gives up (down to 1/16 of it). */
+enum { CANOPY_MAX_HALVINGS = 4 };
+
+/* One sub-step of h; for an implicit integrator whose Newton solve does not
+ * converge, the sub-step again as two halves, recursively. The integrator
+ * leaves the state untouched when its solve fails, so the halves start from
+ * where the sub-step did. *count: sub-steps taken so far. */
+static canopy_status step_or_halve(canopy_model *model, double h, int depth,
+                                   int *count)
+{
+    canopy_status st = raw_step(model, h, *count);
+    if (st == CANOPY_OK) {
+        ++*count;
+        return st;
+    }
+    if (st != CANOPY_ERR_NOT_CONVERGED || !model->integrator->implicit ||
+        depth >= CANOPY_MAX_HALVINGS)
+        return st;
+    st = step_or_halve(model, 0.5 * h, depth + 1, count);
+    if (st != CANOPY_OK) return st;
+    return step_or_halve(model, 0.5 * h, depth + 1, count);
+}
+
 canopy_status canopy_model_advance(canopy_model *model, double dt,
                                    int *substeps_out)
 {
@@ -133,15 +157,16 @@ canopy_status canopy_model_advance(canopy_model *model, double dt,
     if ((st = canopy_state_save(model, &model->rollback)) != CANOPY_OK)
         return st;
     const double t_end = model->t + dt;
+    int taken = 0;
     for (int k = 0; k < n; ++k) {
-        st = raw_step(model, sub, k);
+        st = step_or_halve(model, sub, 0, &taken);
         if (st != CANOPY_OK) {
             canopy_state_load(model, &model->rollback);
             return st;
         }
     }
     model->t = t_end;
-    if (substeps_out) *substeps_out = n;
+    if (substeps_out) *substeps_out = taken;
     canopy_clear_message(model);
     return CANOPY_OK;
 }
