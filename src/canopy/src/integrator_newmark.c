@@ -60,8 +60,8 @@ static void jacobian_apply(const canopy_model *m, const hht_coeffs *c,
 /* Solve J delta = rhs by preconditioned CG to relative tolerance rtol.
  * Returns the iterations used, or -1 if not converged. */
 static int cg_solve(canopy_model *m, const hht_coeffs *c, const double *x,
-                    const double *v, const double *rhs, double *delta, const double *diag,
-                    double rtol)
+                    const double *v, const double *rhs, double *delta,
+                    const double *diag, double rtol)
 {
     const int N = 3 * m->nodes.count;
     double *r = m->work[8], *p = m->work[9], *Ap = m->work[10],
