@@ -21,7 +21,8 @@ Foam::addedMassStabiliser::addedMassStabiliser
     stepStartVelocity_(),
     balanceAcceleration_(),
     fromLastStep_(false),
-    endOfStep_(false)
+    endOfStep_(false),
+    isotropic_(false)
 {
     const scalar density = couplingDict.getOrDefault<scalar>("addedMass", 0);
     if (!(density >= 0))
@@ -44,6 +45,13 @@ Foam::addedMassStabiliser::addedMassStabiliser
             {"stepMean", "endOfStep"}
         )
      == "endOfStep";
+    isotropic_ =
+        readChoice
+        (
+            couplingDict, "addedMassDirection", "coupling.addedMassDirection",
+            {"normal", "all"}
+        )
+     == "all";
     const word integrator(structure.integrator());
     if (endOfStep_ && integrator != "hht" && integrator != "newmark")
     {
@@ -89,8 +97,14 @@ void Foam::addedMassStabiliser::beginStep(canopyStructure& structure)
     }
 
     // The added mass acts along the nodes' normals at the step's start
-    // (area-weighted over the adjacent triangles)
+    // (area-weighted over the adjacent triangles), or with
+    // addedMassDirection all in every direction (a zero direction)
     direction_ = Zero;
+    if (isotropic_)
+    {
+        structure.setDirectionalAddedMass(mass_, direction_);
+        return;
+    }
     const vectorField n(structure.triangleNormals());
     const scalarField areas(structure.triangleAreas());
     forAll(triangles_, t)
@@ -115,6 +129,10 @@ void Foam::addedMassStabiliser::beginStep(canopyStructure& structure)
 Foam::tmp<Foam::vectorField>
 Foam::addedMassStabiliser::balancingForces() const
 {
+    if (isotropic_)
+    {
+        return mass_*balanceAcceleration_;
+    }
     return mass_*(direction_ & balanceAcceleration_)*direction_;
 }
 

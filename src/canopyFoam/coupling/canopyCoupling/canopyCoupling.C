@@ -462,6 +462,7 @@ Foam::canopyCoupling::canopyCoupling
     stopIfNotConverged_(true),
     restartFluid_(false),
     ibForceLoad_(false),
+    tangentialLoad_(false),
     nominalDiameter_(0),
     followPayload_(false),
     wind_(Zero),
@@ -515,6 +516,14 @@ Foam::canopyCoupling::canopyCoupling
             dict, "pressureJump", "coupling.pressureJump", {"sampled", "ibForce"}
         )
      == "ibForce";
+    tangentialLoad_ = readSwitch(dict, "tangentialLoad", false);
+    if (tangentialLoad_ && !ibForceLoad_)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'coupling.tangentialLoad' = true needs"
+            << " 'coupling.pressureJump' = ibForce (the tangential load is"
+            << " the rest of the markers' IB force)" << exit(FatalIOError);
+    }
     addedMass_.reset(new addedMassStabiliser(dict, structure_));
 
     noSlip_ =
@@ -920,6 +929,19 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
     }
     pressureForce_ = sum(dpMarker*mk.areas()*mk.normals());
 
+    // The rest of the reaction -rho F_m: its tangential part, to the nodes
+    vectorField tangentialNodal;
+    if (tangentialLoad_)
+    {
+        const vectorField& n = mk.normals();
+        const vectorField tangential
+        (
+            -rho_*(markerForceTotal_ - (markerForceTotal_ & n)*n)
+        );
+        pressureForce_ += sum(tangential);
+        tangentialNodal = mk.toNodes(structure_.model(), tangential);
+    }
+
     label substeps = 0;
     string message;
     bool advanced = false;
@@ -927,12 +949,16 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
         sectionTimer timer(structureSeconds_);
         structure_.restore();
         structure_.setPressureJump(mk.triangleAverage(dpMarker));
-        if (addedMass_->active() || lineDrag_.valid())
+        if (addedMass_->active() || lineDrag_.valid() || tangentialLoad_)
         {
             vectorField nodal(structure_.nNodes(), Zero);
             if (addedMass_->active())
             {
                 nodal = addedMass_->balancingForces();
+            }
+            if (tangentialLoad_)
+            {
+                nodal += tangentialNodal;
             }
             if (lineDrag_.valid())
             {
@@ -1023,7 +1049,8 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
         << ", slip " << slip_
         << ", " << acceleration_->describe().c_str()
         << ", structure sub-steps " << substeps
-        << ", pressure force " << pressureForce_
+        << (tangentialLoad_ ? ", load on the cloth " : ", pressure force ")
+        << pressureForce_
         << ", IB force " << rho_*markerForce_;
     if (lineDrag_.valid())
     {

@@ -234,3 +234,34 @@ Foam::tmp<Foam::vectorField> Foam::canopyMarkers::toMarkers
     }
     return tresult;
 }
+
+
+Foam::tmp<Foam::vectorField> Foam::canopyMarkers::toNodes
+(
+    const canopy_model* model,
+    const vectorField& markerForces
+) const
+{
+    if (markerForces.size() != triangle_.size())
+    {
+        FatalErrorInFunction
+            << markerForces.size() << " marker forces for "
+            << triangle_.size() << " markers" << exit(FatalError);
+    }
+    const int n = canopy_model_node_count(model);
+    const int nt = canopy_model_triangle_count(model);
+    List<int> tri(3*nt);
+    canopy_model_get_triangles(model, tri.data(), nt);
+
+    tmp<vectorField> tresult(new vectorField(n, Zero));
+    vectorField& result = tresult.ref();
+    forAll(triangle_, m)
+    {
+        const label t = triangle_[m];
+        for (int k = 0; k < 3; ++k)
+        {
+            result[tri[3*t + k]] += barycentric_[m][k]*markerForces[m];
+        }
+    }
+    return tresult;
+}
