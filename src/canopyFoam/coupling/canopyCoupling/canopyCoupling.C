@@ -939,7 +939,7 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
             -rho_*(markerForceTotal_ - (markerForceTotal_ & n)*n)
         );
         pressureForce_ += sum(tangential);
-        tangentialNodal = mk.toNodes(structure_.model(), tangential);
+        tangentialNodal = mk.toNodes(tangential);
     }
 
     label substeps = 0;

@@ -104,7 +104,9 @@ Foam::canopyMarkers::canopyMarkers
     const labelList& levels
 )
 :
-    levels_(levels)
+    levels_(levels),
+    nNodes_(canopy_model_node_count(model)),
+    triangleNodes_()
 {
     const int nt = canopy_model_triangle_count(model);
     if (levels.size() != nt)
@@ -112,6 +114,16 @@ Foam::canopyMarkers::canopyMarkers
         FatalErrorInFunction
             << levels.size() << " subdivision levels for " << nt
             << " canopy triangles" << exit(FatalError);
+    }
+    List<int> tri(3*nt);
+    canopy_model_get_triangles(model, tri.data(), nt);
+    triangleNodes_.setSize(nt);
+    forAll(triangleNodes_, t)
+    {
+        for (int k = 0; k < 3; ++k)
+        {
+            triangleNodes_[t][k] = tri[3*t + k];
+        }
     }
 
     DynamicList<label> parent;
@@ -159,10 +171,8 @@ void Foam::canopyMarkers::update
     const int n = canopy_model_node_count(model);
     const int nt = canopy_model_triangle_count(model);
     List<double> x(3*n);
-    List<int> tri(3*nt);
     List<double> normal(3*nt), area(nt);
     canopy_model_get_positions(model, x.data(), n);
-    canopy_model_get_triangles(model, tri.data(), nt);
     canopy_model_get_triangle_geometry
     (
         model, nullptr, normal.data(), area.data(), nt
@@ -174,7 +184,7 @@ void Foam::canopyMarkers::update
         point p(Zero);
         for (int k = 0; k < 3; ++k)
         {
-            const int i = tri[3*t + k];
+            const label i = triangleNodes_[t][k];
             p += barycentric_[m][k]*point(x[3*i], x[3*i+1], x[3*i+2]);
         }
         points_[m] = p - origin;
@@ -238,7 +248,6 @@ Foam::tmp<Foam::vectorField> Foam::canopyMarkers::toMarkers
 
 Foam::tmp<Foam::vectorField> Foam::canopyMarkers::toNodes
 (
-    const canopy_model* model,
     const vectorField& markerForces
 ) const
 {
@@ -248,19 +257,14 @@ Foam::tmp<Foam::vectorField> Foam::canopyMarkers::toNodes
             << markerForces.size() << " marker forces for "
             << triangle_.size() << " markers" << exit(FatalError);
     }
-    const int n = canopy_model_node_count(model);
-    const int nt = canopy_model_triangle_count(model);
-    List<int> tri(3*nt);
-    canopy_model_get_triangles(model, tri.data(), nt);
-
-    tmp<vectorField> tresult(new vectorField(n, Zero));
+    tmp<vectorField> tresult(new vectorField(nNodes_, Zero));
     vectorField& result = tresult.ref();
     forAll(triangle_, m)
     {
-        const label t = triangle_[m];
+        const FixedList<label, 3>& nodes = triangleNodes_[triangle_[m]];
         for (int k = 0; k < 3; ++k)
         {
-            result[tri[3*t + k]] += barycentric_[m][k]*markerForces[m];
+            result[nodes[k]] += barycentric_[m][k]*markerForces[m];
         }
     }
     return tresult;
