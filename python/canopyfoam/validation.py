@@ -504,6 +504,14 @@ for _run in RUNS:
 RUN_BY_ID = {r.ident: r for r in RUNS}
 
 
+# The runs of a mesh study whose spread measures the mesh's effect: the
+# G-11's flat starts, the 7 ft's runs of one length (8 s)
+MESH_SPREAD_RUNS = {
+    "G11meshFullLoad": lambda run: "flat" in run.ident,
+    "mesh7ftFullLoad": lambda run: not run.ident.endswith("-16s"),
+}
+
+
 def complete_means(results, keep):
     """The mean descent speeds of the complete runs that keep(run)."""
     return [rec["analysis"]["descentVelocity"]["mean"]
@@ -1088,11 +1096,8 @@ def write_report():
                        " Runs made with another version may not match the "
                        "current code: re-run them."), ""]
         refs = []
-        # the mesh's effect: the G-11's flat starts, the 7 ft's 8 s runs
-        done = complete_means(
-            results, lambda run: not (
-                name == "G11meshFullLoad" and "flat" not in run.ident
-                or name == "mesh7ftFullLoad" and run.ident.endswith("-16s")))
+        done = complete_means(results,
+                              MESH_SPREAD_RUNS.get(name, lambda run: True))
         if name in ("mesh7ft", "mesh7ftUndamped", "mesh7ftFullLoad",
                     "G11meshFullLoad") and len(done) >= 2:
             spread = (max(done) - min(done)) / np.mean(done)
