@@ -5,7 +5,10 @@
 
 canopy_status canopy_model_frequency_bound(canopy_model *model, double *omega)
 {
-    if (model == NULL || omega == NULL) return CANOPY_ERR_ARGUMENT;
+    if (model == NULL) return CANOPY_ERR_ARGUMENT;
+    if (omega == NULL)
+        return canopy_fail(model, CANOPY_ERR_ARGUMENT,
+                           "frequency_bound: omega is NULL");
     canopy_status st = canopy_model_prepare(model);
     if (st != CANOPY_OK) return st;
     const canopy_nodes *n = &model->nodes;
@@ -37,7 +40,10 @@ canopy_status canopy_model_frequency_bound(canopy_model *model, double *omega)
 
 canopy_status canopy_model_stable_step(canopy_model *model, double *dt)
 {
-    if (model == NULL || dt == NULL) return CANOPY_ERR_ARGUMENT;
+    if (model == NULL) return CANOPY_ERR_ARGUMENT;
+    if (dt == NULL)
+        return canopy_fail(model, CANOPY_ERR_ARGUMENT,
+                           "stable_step: dt is NULL");
     double omega;
     canopy_status st = canopy_model_frequency_bound(model, &omega);
     if (st != CANOPY_OK) return st;

@@ -25,9 +25,12 @@ canopy_status canopy_state_save(canopy_model *m, canopy_state_copy *c)
         c->acc = a;
         c->count = n;
     }
-    memcpy(c->x, m->nodes.x, 3 * sizeof(double) * (size_t)n);
-    memcpy(c->v, m->nodes.v, 3 * sizeof(double) * (size_t)n);
-    memcpy(c->acc, m->nodes.acc, 3 * sizeof(double) * (size_t)n);
+    /* A model without nodes has no arrays (NULL): nothing to copy. */
+    if (n > 0) {
+        memcpy(c->x, m->nodes.x, 3 * sizeof(double) * (size_t)n);
+        memcpy(c->v, m->nodes.v, 3 * sizeof(double) * (size_t)n);
+        memcpy(c->acc, m->nodes.acc, 3 * sizeof(double) * (size_t)n);
+    }
     c->acc_valid = m->acc_valid;
     c->t = m->t;
     c->valid = 1;
@@ -36,9 +39,11 @@ canopy_status canopy_state_save(canopy_model *m, canopy_state_copy *c)
 
 void canopy_state_load(canopy_model *m, const canopy_state_copy *c)
 {
-    memcpy(m->nodes.x, c->x, 3 * sizeof(double) * (size_t)c->count);
-    memcpy(m->nodes.v, c->v, 3 * sizeof(double) * (size_t)c->count);
-    memcpy(m->nodes.acc, c->acc, 3 * sizeof(double) * (size_t)c->count);
+    if (c->count > 0) {
+        memcpy(m->nodes.x, c->x, 3 * sizeof(double) * (size_t)c->count);
+        memcpy(m->nodes.v, c->v, 3 * sizeof(double) * (size_t)c->count);
+        memcpy(m->nodes.acc, c->acc, 3 * sizeof(double) * (size_t)c->count);
+    }
     m->acc_valid = c->acc_valid;
     m->t = c->t;
 }

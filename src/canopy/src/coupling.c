@@ -7,7 +7,7 @@ static canopy_status tri_count_check(const canopy_model *model, int nt,
                                      const char *what)
 {
     if (nt != model->tris.count)
-        return canopy_fail((canopy_model *)model, CANOPY_ERR_RANGE,
+        return canopy_reject(model, CANOPY_ERR_RANGE,
                            "%s: count %d does not match the model's %d "
                            "triangles", what, nt, model->tris.count);
     return CANOPY_OK;
@@ -42,7 +42,10 @@ canopy_status canopy_model_get_triangle_geometry(const canopy_model *model,
 canopy_status canopy_model_get_triangle_velocities(const canopy_model *model,
                                                    double *velocity, int nt)
 {
-    if (model == NULL || velocity == NULL) return CANOPY_ERR_ARGUMENT;
+    if (model == NULL) return CANOPY_ERR_ARGUMENT;
+    if (velocity == NULL)
+        return canopy_reject(model, CANOPY_ERR_ARGUMENT,
+                             "get_triangle_velocities: velocity is NULL");
     canopy_status st = tri_count_check(model, nt, "get_triangle_velocities");
     if (st != CANOPY_OK) return st;
     const double *v = model->nodes.v;
@@ -71,7 +74,10 @@ double canopy_model_seepage_velocity(const canopy_model *model, double dp)
 canopy_status canopy_model_get_normal_velocities(const canopy_model *model,
                                                  double *vn, int nt)
 {
-    if (model == NULL || vn == NULL) return CANOPY_ERR_ARGUMENT;
+    if (model == NULL) return CANOPY_ERR_ARGUMENT;
+    if (vn == NULL)
+        return canopy_reject(model, CANOPY_ERR_ARGUMENT,
+                             "get_normal_velocities: vn is NULL");
     canopy_status st = tri_count_check(model, nt, "get_normal_velocities");
     if (st != CANOPY_OK) return st;
     const double *x = model->nodes.x, *v = model->nodes.v;

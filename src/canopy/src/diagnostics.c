@@ -26,7 +26,9 @@ static double spring_energy(const canopy_model *m, int k)
 canopy_status canopy_model_energies(const canopy_model *model,
                                     canopy_energies *e)
 {
-    if (model == NULL || e == NULL) return CANOPY_ERR_ARGUMENT;
+    if (model == NULL) return CANOPY_ERR_ARGUMENT;
+    if (e == NULL)
+        return canopy_reject(model, CANOPY_ERR_ARGUMENT, "energies: e is NULL");
     const canopy_nodes *n = &model->nodes;
     const double *g = model->gravity;
     double kin = 0.0, grav = 0.0, spr = 0.0;
@@ -45,7 +47,9 @@ canopy_status canopy_model_energies(const canopy_model *model,
 
 canopy_status canopy_model_canopy_area(const canopy_model *model, double *area)
 {
-    if (model == NULL || area == NULL) return CANOPY_ERR_ARGUMENT;
+    if (model == NULL) return CANOPY_ERR_ARGUMENT;
+    if (area == NULL)
+        return canopy_reject(model, CANOPY_ERR_ARGUMENT, "canopy_area: area is NULL");
     double A = 0.0;
     for (int t = 0; t < model->tris.count; ++t) {
         double an[3];
@@ -60,10 +64,12 @@ canopy_status canopy_model_canopy_area(const canopy_model *model, double *area)
 canopy_status canopy_model_projected_diameter(const canopy_model *model,
                                               double *diameter)
 {
-    if (model == NULL || diameter == NULL) return CANOPY_ERR_ARGUMENT;
+    if (model == NULL) return CANOPY_ERR_ARGUMENT;
+    if (diameter == NULL)
+        return canopy_reject(model, CANOPY_ERR_ARGUMENT, "projected_diameter: diameter is NULL");
     const canopy_triangles *t = &model->tris;
     if (t->count == 0)
-        return canopy_fail((canopy_model *)model, CANOPY_ERR_STATE,
+        return canopy_reject(model, CANOPY_ERR_STATE,
                            "projected_diameter: the model has no canopy "
                            "triangles");
     /* Axis: along gravity through the area-weighted canopy centroid. */
@@ -107,7 +113,7 @@ canopy_status canopy_model_payload_state(const canopy_model *model,
     if (model == NULL) return CANOPY_ERR_ARGUMENT;
     const int p = model->payload_node;
     if (p < 0 || p >= model->nodes.count)
-        return canopy_fail((canopy_model *)model, CANOPY_ERR_STATE,
+        return canopy_reject(model, CANOPY_ERR_STATE,
                            "payload_state: the model has no payload node");
     if (x) memcpy(x, model->nodes.x + 3 * p, 3 * sizeof(double));
     if (v) memcpy(v, model->nodes.v + 3 * p, 3 * sizeof(double));
@@ -116,7 +122,9 @@ canopy_status canopy_model_payload_state(const canopy_model *model,
 
 canopy_status canopy_model_get_forces(canopy_model *model, double *f, int n)
 {
-    if (model == NULL || f == NULL) return CANOPY_ERR_ARGUMENT;
+    if (model == NULL) return CANOPY_ERR_ARGUMENT;
+    if (f == NULL)
+        return canopy_reject(model, CANOPY_ERR_ARGUMENT, "get_forces: f is NULL");
     if (n != model->nodes.count)
         return canopy_fail(model, CANOPY_ERR_RANGE,
                            "get_forces: count %d does not match the model's %d "
@@ -132,10 +140,12 @@ canopy_status canopy_model_get_forces(canopy_model *model, double *f, int n)
 canopy_status canopy_model_get_tensions(const canopy_model *model, double *T,
                                         int ns)
 {
-    if (model == NULL || T == NULL) return CANOPY_ERR_ARGUMENT;
+    if (model == NULL) return CANOPY_ERR_ARGUMENT;
+    if (T == NULL)
+        return canopy_reject(model, CANOPY_ERR_ARGUMENT, "get_tensions: T is NULL");
     const canopy_springs *s = &model->springs;
     if (ns != s->count)
-        return canopy_fail((canopy_model *)model, CANOPY_ERR_RANGE,
+        return canopy_reject(model, CANOPY_ERR_RANGE,
                            "get_tensions: count %d does not match the model's "
                            "%d springs", ns, s->count);
     const double *x = model->nodes.x, *v = model->nodes.v;

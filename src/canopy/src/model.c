@@ -332,8 +332,10 @@ canopy_status canopy_model_set_gravity(canopy_model *model, const double g[3])
 
 canopy_status canopy_model_get_gravity(const canopy_model *model, double g[3])
 {
-    if (model == NULL || g == NULL)
-        return CANOPY_ERR_ARGUMENT;
+    NULL_MODEL_CHECK(model);
+    if (g == NULL)
+        return canopy_reject(model, CANOPY_ERR_ARGUMENT,
+                             "get_gravity: g is NULL");
     memcpy(g, model->gravity, 3 * sizeof(double));
     return CANOPY_OK;
 }
@@ -441,11 +443,11 @@ canopy_status canopy_model_set_time(canopy_model *model, double t)
 static canopy_status count_check(const canopy_model *model, const void *ptr,
                                  int given, int expected, const char *what)
 {
-    canopy_model *mut = (canopy_model *)model; /* message slot only */
     if (ptr == NULL)
-        return canopy_fail(mut, CANOPY_ERR_ARGUMENT, "%s: array is NULL", what);
+        return canopy_reject(model, CANOPY_ERR_ARGUMENT, "%s: array is NULL",
+                             what);
     if (given != expected)
-        return canopy_fail(mut, CANOPY_ERR_RANGE,
+        return canopy_reject(model, CANOPY_ERR_RANGE,
                            "%s: count %d does not match the model's %d", what,
                            given, expected);
     return CANOPY_OK;

@@ -132,6 +132,15 @@ canopy_status canopy_format_message(char *buffer, size_t size,
     ;
 /* Clear the handle's message (a successful call). */
 void canopy_clear_message(canopy_model *model);
+/* canopy_fail for calls that take a const handle (getters): the message is
+ * not part of the model's state. Every rejection of a non-NULL handle goes
+ * through canopy_fail or this, so its message is always the call's own. */
+canopy_status canopy_reject(const canopy_model *model, canopy_status status,
+                            const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
 
 /* Validate masses and topology, (re)allocate work arrays. */
 canopy_status canopy_model_prepare(canopy_model *model);

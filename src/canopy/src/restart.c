@@ -190,11 +190,15 @@ canopy_status canopy_model_read_state(canopy_model *model, const char *path,
     }
     if (st == CANOPY_OK) {
         /* Everything was read and checked: only now change the model. */
-        memcpy(model->nodes.x, b.x, sizeof(double) * 3 * n);
-        memcpy(model->nodes.v, b.v, sizeof(double) * 3 * n);
-        memcpy(model->nodes.force_ext, b.f, sizeof(double) * 3 * n);
+        /* A model without nodes has NULL arrays: copy only what exists. */
+        if (n > 0) {
+            memcpy(model->nodes.x, b.x, sizeof(double) * 3 * n);
+            memcpy(model->nodes.v, b.v, sizeof(double) * 3 * n);
+            memcpy(model->nodes.force_ext, b.f, sizeof(double) * 3 * n);
+            if (b.acc_valid)
+                memcpy(model->nodes.acc, b.acc, sizeof(double) * 3 * n);
+        }
         if (nt > 0) memcpy(model->tris.dp, b.dp, sizeof(double) * nt);
-        if (b.acc_valid) memcpy(model->nodes.acc, b.acc, sizeof(double) * 3 * n);
         model->acc_valid = b.acc_valid;
         model->t = b.t;
         canopy_clear_message(model);

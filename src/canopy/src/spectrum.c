@@ -99,7 +99,10 @@ static void tridiagonal_eigenvector(int k, const double *a, const double *b,
 canopy_status canopy_model_max_frequency(canopy_model *model, double *omega,
                                          double *residual)
 {
-    if (model == NULL || omega == NULL) return CANOPY_ERR_ARGUMENT;
+    if (model == NULL) return CANOPY_ERR_ARGUMENT;
+    if (omega == NULL)
+        return canopy_fail(model, CANOPY_ERR_ARGUMENT,
+                           "max_frequency: omega is NULL");
     canopy_status st = canopy_model_prepare(model);
     if (st != CANOPY_OK) return st;
     const int n = model->nodes.count;

@@ -55,6 +55,19 @@ canopy_status canopy_fail(canopy_model *model, canopy_status status,
     return status;
 }
 
+canopy_status canopy_reject(const canopy_model *model, canopy_status status,
+                            const char *fmt, ...)
+{
+    if (model == NULL) return status;
+    /* Models are only ever allocated mutable (canopy_model_create). */
+    canopy_model *m = (canopy_model *)model;
+    va_list ap;
+    va_start(ap, fmt);
+    format_va(m->message, sizeof m->message, status, fmt, ap);
+    va_end(ap);
+    return status;
+}
+
 void canopy_clear_message(canopy_model *model)
 {
     if (model != NULL) model->message[0] = '\0';
