@@ -192,3 +192,120 @@ CANOPY_TEST(robust_empty_model_checkpoint_and_read_state)
     unlink(path);
     canopy_model_destroy(&m);
 }
+
+CANOPY_TEST(robust_rectangle_extreme_aspect)
+{
+    canopy_model *m = NULL;
+    ASSERT_OK(m, canopy_model_create(&m));
+    ASSERT_OK(m, hht_membrane(m));
+    state before;
+    take(m, &before);
+    canopy_rectangle_spec r = canopy_rectangle_spec_default();
+    r.length = 1.0;
+    r.edge_length = 0.1;
+    /* Rows spaced like a 1e-10 wide row's nodes: ~1e10 rows (an int
+     * overflow and a calloc of -2147483647 rows before). */
+    r.width = 1e-10;
+    ASSERT_FRESH(m, CANOPY_ERR_ARGUMENT, canopy_build_rectangle(m, &r),
+                 "spec.width 1e-10, spec.length 1");
+    ASSERT_MESSAGE_HAS(m, "more than the builder's limit");
+    r.width = 4.9e-324;
+    ASSERT_FRESH(m, CANOPY_ERR_ARGUMENT, canopy_build_rectangle(m, &r),
+                 "spec.width 4.94066e-324");
+    /* A denormal length: the rows coincide; the build is rolled back. */
+    r.width = 1.0;
+    r.length = 4.9e-324;
+    ASSERT_FRESH(m, CANOPY_ERR_ARGUMENT, canopy_build_rectangle(m, &r),
+                 "spec.length 4.94066e-324");
+    ASSERT_MESSAGE_HAS(m, "degenerate model");
+    /* Far from the origin a 1 mm cloth has no room between its nodes. */
+    r.length = 1e-3;
+    r.width = 1e-3;
+    r.edge_length = 1e-4;
+    r.origin[0] = 1e17;
+    ASSERT_FRESH(m, CANOPY_ERR_ARGUMENT, canopy_build_rectangle(m, &r),
+                 "spec.origin (1e+17, 0, 0)");
+    assert_untouched(m, &before);
+    canopy_model_destroy(&m);
+}
+
+CANOPY_TEST(robust_cross_thin_arms)
+{
+    canopy_model *m = NULL;
+    ASSERT_OK(m, canopy_model_create(&m));
+    ASSERT_OK(m, hht_membrane(m));
+    state before;
+    take(m, &before);
+    canopy_cross_spec c = canopy_cross_spec_default();
+    c.span = 0.5;
+    c.arm_width = 1e-10;
+    c.edge_length = 0.1;
+    c.n_attachments = 4;
+    int attach[4] = {-5, -5, -5, -5};
+    /* ~6e9 rows per arm: used to overflow int and return OK with
+     * attachment indices like 1073741831. */
+    ASSERT_FRESH(m, CANOPY_ERR_ARGUMENT, canopy_build_cross(m, &c, attach),
+                 "spec.span 0.5, spec.arm_width 1e-10");
+    ASSERT_MESSAGE_HAS(m, "more than the builder's limit");
+    ASSERT_TRUE(attach[0] == -5 && attach[3] == -5);
+    /* Tiny but within limits: nodes 1e-170 apart coincide in squares. */
+    c.span = 1e-170;
+    c.arm_width = 4e-171;
+    c.edge_length = 1e-171;
+    ASSERT_FRESH(m, CANOPY_ERR_ARGUMENT, canopy_build_cross(m, &c, attach),
+                 "spec.span 1e-170");
+    ASSERT_MESSAGE_HAS(m, "degenerate model");
+    assert_untouched(m, &before);
+    canopy_model_destroy(&m);
+}
+
+CANOPY_TEST(robust_chord_and_lines_degenerate)
+{
+    canopy_model *m = NULL;
+    ASSERT_OK(m, canopy_model_create(&m));
+    ASSERT_OK(m, hht_membrane(m));
+    state before;
+    take(m, &before);
+    const canopy_material line = canopy_material_line_default();
+    const double a[3] = {0.0, 0.0, 0.0}, b[3] = {1e-161, 0.0, 0.0};
+    /* E A / 1e-161 is infinite: named as the user's distance, not as an
+     * internal spring's stiffness; the checkpoint survives. */
+    ASSERT_FRESH(m, CANOPY_ERR_ARGUMENT,
+                 canopy_build_chord(m, a, b, 1, &line, CANOPY_GROUP_LINE, -1,
+                                    NULL),
+                 "the distance 1e-161 from start");
+    ASSERT_TRUE(strstr(canopy_model_message(m), "add_spring") == NULL);
+    const double far[3] = {1e300, 1e300, 0.0}, back[3] = {-1e300, -1e300, 0.0};
+    ASSERT_FRESH(m, CANOPY_ERR_ARGUMENT,
+                 canopy_build_chord(m, back, far, 2, &line, CANOPY_GROUP_LINE,
+                                    -1, NULL),
+                 "build_chord");
+    assert_untouched(m, &before);
+
+    /* Three coincident attachment nodes, lines of 1e-300. */
+    int att[3];
+    const double p[3] = {5.0, 5.0, 5.0};
+    for (int k = 0; k < 3; ++k)
+        ASSERT_OK(m, canopy_model_add_node(m, p, 0.1, CANOPY_GROUP_OTHER,
+                                           &att[k]));
+    ASSERT_OK(m, canopy_model_checkpoint(m));
+    take(m, &before);
+    canopy_lines_spec l = canopy_lines_spec_default();
+    l.line_length = 1e-300;
+    l.edge_length = 1e-300;
+    ASSERT_FRESH(m, CANOPY_ERR_ARGUMENT,
+                 canopy_build_suspension_lines(m, att, 3, &l, NULL),
+                 "the line from attach[0]");
+    ASSERT_TRUE(strstr(canopy_model_message(m), "stiffness inf") == NULL ||
+                strstr(canopy_model_message(m), "length 1e-300") != NULL);
+    state after;
+    take(m, &after);
+    ASSERT_TRUE(same(&before, &after));
+    ASSERT_OK(m, canopy_model_restore(m));
+    /* A mass that the line's share would make infinite. */
+    ASSERT_OK(m, canopy_model_add_node_mass(m, att[0], 1.7e308));
+    ASSERT_FRESH(m, CANOPY_ERR_ARGUMENT,
+                 canopy_model_add_node_mass(m, att[0], 1.7e308),
+                 "not finite");
+    canopy_model_destroy(&m);
+}

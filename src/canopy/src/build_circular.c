@@ -2,6 +2,7 @@
 #include "build_internal.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 
 #define WHO "build_circular"
@@ -634,7 +635,14 @@ canopy_status canopy_build_circular(canopy_model *model,
                 attach_out[k] = rg[nr].first + k * rg[nr].per_gore;
         canopy_clear_message(model);
     } else {
-        canopy_build_rollback(model, &mark);
+        char args[240];
+        snprintf(args, sizeof args, "spec.diameter %g, spec.vent_diameter "
+                 "%g, spec.height %g, spec.edge_length %g and "
+                 "spec.n_attachments %d at spec.center (%g, %g, %g)",
+                 spec->diameter, spec->vent_diameter, spec->height,
+                 spec->edge_length, spec->n_attachments, spec->center[0],
+                 spec->center[1], spec->center[2]);
+        st = canopy_build_abort(model, &mark, st, WHO, args);
     }
     free(chain);
     free(rg);

@@ -1,8 +1,11 @@
 /* build_common.c — shared builder machinery (materials, fabric triangles with lumped mass and deduplicated edge springs, zipping, rollback) and the *_default() specs. */
 #include "build_internal.h"
 
+#include <float.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 /* --- defaults -------------------------------------------------------------
  *
@@ -163,6 +166,9 @@ void canopy_build_mark_take(const canopy_model *model, canopy_build_mark *mark)
     mark->nodes = model->nodes.count;
     mark->springs = model->springs.count;
     mark->triangles = model->tris.count;
+    mark->checkpoint_valid = model->checkpoint.valid;
+    mark->acc_valid = model->acc_valid;
+    mark->payload_node = model->payload_node;
 }
 
 void canopy_build_rollback(canopy_model *model, const canopy_build_mark *mark)
@@ -172,8 +178,50 @@ void canopy_build_rollback(canopy_model *model, const canopy_build_mark *mark)
     model->nodes.count = mark->nodes;
     model->springs.count = mark->springs;
     model->tris.count = mark->triangles;
-    if (model->payload_node >= mark->nodes) model->payload_node = -1;
+    /* The checkpoint's arrays still hold mark->nodes nodes: adding only
+     * marked it invalid. The carried acceleration of the old nodes was not
+     * touched either. */
+    model->checkpoint.valid = mark->checkpoint_valid;
+    model->acc_valid = mark->acc_valid;
+    model->payload_node = mark->payload_node;
     model->prepared = 0;
+}
+
+canopy_status canopy_build_abort(canopy_model *model,
+                                 const canopy_build_mark *mark,
+                                 canopy_status st, const char *who,
+                                 const char *args)
+{
+    canopy_build_rollback(model, mark);
+    if (st != CANOPY_ERR_ARGUMENT && st != CANOPY_ERR_RANGE) return st;
+    /* The internal message without its "CANOPY_ERR_X: " prefix. */
+    char inner[CANOPY_MESSAGE_SIZE];
+    const char *text = strstr(model->message, ": ");
+    snprintf(inner, sizeof inner, "%s", text ? text + 2 : model->message);
+    return canopy_fail(model, CANOPY_ERR_ARGUMENT,
+                       "%s: %s make a degenerate model (%s)", who, args,
+                       inner);
+}
+
+canopy_status canopy_build_check_segment(canopy_model *model, const char *who,
+                                         const char *what, double length,
+                                         int n_segments,
+                                         const canopy_material *material)
+{
+    const double seg = length / n_segments;
+    const double k = canopy_build_string_stiffness(material, seg);
+    const double half_mass = 0.5 * material->density * seg;
+    if (!(seg * seg >= DBL_MIN) || !isfinite(seg * seg))
+        return canopy_fail(model, CANOPY_ERR_ARGUMENT,
+                           "%s: %s gives segments of length %g (%d of %g), "
+                           "too short or too long for double precision", who,
+                           what, seg, n_segments, length);
+    if (!(k > 0.0) || !isfinite(k) || !isfinite(half_mass))
+        return canopy_fail(model, CANOPY_ERR_ARGUMENT,
+                           "%s: %s gives segments of length %g, whose "
+                           "stiffness %g or mass %g from the material is not "
+                           "finite and > 0", who, what, seg, k, 2 * half_mass);
+    return CANOPY_OK;
 }
 
 canopy_status canopy_build_string_spring(canopy_model *model, int i, int j,
@@ -341,6 +389,7 @@ canopy_status canopy_fabric_zip(canopy_fabric_builder *fb, const int *lower,
 int canopy_build_spacings(double len, double e)
 {
     const double q = floor(len / e + 0.5);
+    if (!(q <= CANOPY_BUILD_SPACINGS_MAX)) return CANOPY_BUILD_SPACINGS_MAX;
     return q < 1.0 ? 1 : (int)q;
 }
 
@@ -349,6 +398,7 @@ int canopy_build_spacings(double len, double e)
 int canopy_build_row_spacings(double T, double s)
 {
     const double q = ceil(T / (0.5 * sqrt(3.0) * s) * (1.0 - 1e-12));
+    if (!(q <= CANOPY_BUILD_SPACINGS_MAX)) return CANOPY_BUILD_SPACINGS_MAX;
     return q < 1.0 ? 1 : (int)q;
 }
 

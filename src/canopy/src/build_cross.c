@@ -2,6 +2,7 @@
 #include "build_internal.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 
 /* Why not one lattice for the whole cross: a lattice of equilateral
@@ -193,11 +194,17 @@ canopy_status canopy_build_cross(canopy_model *model,
      * so that the tip row is an even (unshifted) row */
     int nr = canopy_build_row_spacings(0.5 * (S - w), w / nc);
     if (nr % 2) ++nr;
-    if (!((nc + 1.0) * (nc + 1.0) + 4.0 * nr * (nc + 2.0) <=
-          CANOPY_BUILD_MAX_ITEMS))
+    char args[200];
+    snprintf(args, sizeof args, "spec.span %g, spec.arm_width %g, "
+             "spec.edge_length %g and spec.n_attachments %d at spec.center "
+             "(%g, %g, %g)", S, w, e, spec->n_attachments, spec->center[0],
+             spec->center[1], spec->center[2]);
+    const double nodes = (nc + 1.0) * (nc + 1.0) + 4.0 * nr * (nc + 2.0);
+    if (!(nodes <= CANOPY_BUILD_MAX_ITEMS))
         return canopy_fail(model, CANOPY_ERR_ARGUMENT,
-                           "%s: spec.edge_length %g needs more nodes than the "
-                           "builder's limit %.3g", who, e,
+                           "%s: %s need ~%.3g nodes (the arms' rows are "
+                           "spaced like the nodes across them), more than "
+                           "the builder's limit %.3g", who, args, nodes,
                            CANOPY_BUILD_MAX_ITEMS);
     int *chains = malloc(2 * (size_t)(nc + 2) * sizeof *chains);
     if (chains == NULL)
@@ -208,10 +215,7 @@ canopy_status canopy_build_cross(canopy_model *model,
     canopy_build_mark_take(model, &mark);
     st = cross_fill(model, spec, nc, nr, chains, chains + nc + 2, attach_out);
     free(chains);
-    if (st != CANOPY_OK) {
-        canopy_build_rollback(model, &mark);
-        return st;
-    }
+    if (st != CANOPY_OK) return canopy_build_abort(model, &mark, st, who, args);
     canopy_clear_message(model);
     return CANOPY_OK;
 }

@@ -38,16 +38,38 @@ double canopy_build_sheet_stiffness(const canopy_material *material);
 double canopy_build_string_stiffness(const canopy_material *material,
                                      double l0);
 
-/* Counts at the start of a builder call, so that a failure after validation
- * (only an allocation can fail then) can drop everything the call added.
- * Builders add mass to nodes that existed before the call only as their last
- * action, after every allocation succeeded, so truncating the counts restores
- * the model (the user checkpoint may be dropped, as by any topology change). */
+/* The model at the start of a builder call, so that a failure part-way can
+ * drop everything the call added: the counts, and what adding changes
+ * besides (the user checkpoint's validity, the carried acceleration's
+ * validity, the payload node). Builders add mass to nodes that existed
+ * before the call only as their last action, once nothing can fail, so
+ * truncating the counts and restoring these restores the model exactly, as
+ * canopy.h promises for a failed call. */
 typedef struct canopy_build_mark {
     int nodes, springs, triangles;
+    int checkpoint_valid, acc_valid, payload_node;
 } canopy_build_mark;
 void canopy_build_mark_take(const canopy_model *model, canopy_build_mark *mark);
 void canopy_build_rollback(canopy_model *model, const canopy_build_mark *mark);
+/* Roll back to mark after the call failed with st, and let the message name
+ * the user's arguments: an ARGUMENT or RANGE failure of an internal add_*
+ * call (a degenerate mesh: coincident nodes, an infinite stiffness or mass)
+ * becomes "<who>: <args> make a degenerate model (<internal message>)" with
+ * status CANOPY_ERR_ARGUMENT. Returns the status. */
+canopy_status canopy_build_abort(canopy_model *model,
+                                 const canopy_build_mark *mark,
+                                 canopy_status st, const char *who,
+                                 const char *args);
+
+/* A string's segment of length seg (one of n_segments over `length`) must
+ * make a sound spring: seg^2 a normal number (so that the nodes are apart
+ * in double precision) and finite, the stiffness and the half-segment mass
+ * from the material finite and the stiffness > 0. On failure the message
+ * names `what` (the user's arguments that give the length). */
+canopy_status canopy_build_check_segment(canopy_model *model, const char *who,
+                                         const char *what, double length,
+                                         int n_segments,
+                                         const canopy_material *material);
 
 /* Adds a string spring i–j (rest length = current distance) with stiffness
  * from the material, its damping and law; *l0_out (may be NULL) receives the
@@ -109,9 +131,12 @@ canopy_status canopy_build_check_positive(canopy_model *model, const char *who,
 
 /* Flat builders (rectangle, cross): spacings of a length at the target edge
  * e, round(len / e) >= 1; row spacings of a band of thickness T for node
- * spacing s, the fewest with spacing <= (sqrt(3)/2) s; the checks they share
+ * spacing s, the fewest with spacing <= (sqrt(3)/2) s (both saturate at
+ * CANOPY_BUILD_SPACINGS_MAX, beyond the builders' limits, and for NaN,
+ * so that a huge ratio is never converted to int); the checks they share
  * (edge length finite and > 0, the placement point `point_name` finite, the
  * fabric a valid sheet material). */
+#define CANOPY_BUILD_SPACINGS_MAX 100000000
 int canopy_build_spacings(double len, double e);
 int canopy_build_row_spacings(double T, double s);
 canopy_status canopy_build_check_flat(canopy_model *model, const char *who,

@@ -2,6 +2,7 @@
 #include "build_internal.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 
 /* Springs and interior nodes of a straight string from node a (existing) to
@@ -99,11 +100,26 @@ canopy_status canopy_build_chord(canopy_model *model, const double start[3],
     const double *x0 = first_node >= 0 ? model->nodes.x + 3 * first_node
                                        : start;
     const double d[3] = {end[0] - x0[0], end[1] - x0[1], end[2] - x0[2]};
-    const double len = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    const double len = hypot(hypot(d[0], d[1]), d[2]); /* no underflow */
     if (!(len > 0.0))
         return canopy_fail(model, CANOPY_ERR_ARGUMENT,
                            "%s: end coincides with the start%s", who,
                            first_node >= 0 ? " (first_node)" : "");
+    char args[200];
+    snprintf(args, sizeof args, "the distance %g from %s (%g, %g, %g) to "
+             "end (%g, %g, %g) over n_segments %d", len,
+             first_node >= 0 ? "first_node" : "start", x0[0], x0[1], x0[2],
+             end[0], end[1], end[2], n_segments);
+    st = canopy_build_check_segment(model, who, args, len, n_segments,
+                                    material);
+    if (st != CANOPY_OK) return st;
+    if (first_node >= 0 &&
+        !isfinite(model->nodes.mass[first_node] +
+                  0.5 * material->density * len / n_segments))
+        return canopy_fail(model, CANOPY_ERR_ARGUMENT,
+                           "%s: first_node %d's mass %g cannot take the "
+                           "chord's share", who, first_node,
+                           model->nodes.mass[first_node]);
 
     canopy_build_mark mark;
     canopy_build_mark_take(model, &mark);
@@ -113,10 +129,7 @@ canopy_status canopy_build_chord(canopy_model *model, const double start[3],
     if (st == CANOPY_OK)
         st = string_between(model, a, &b, end, n_segments, material, group,
                             &ma, &mb);
-    if (st != CANOPY_OK) {
-        canopy_build_rollback(model, &mark);
-        return st;
-    }
+    if (st != CANOPY_OK) return canopy_build_abort(model, &mark, st, who, args);
     /* Nothing can fail from here: indices valid, masses finite, >= 0. */
     canopy_model_add_node_mass(model, a, ma);
     canopy_model_add_node_mass(model, b, mb);
@@ -208,8 +221,23 @@ canopy_status canopy_build_suspension_lines(canopy_model *model,
     for (int k = 0; k < n_attach; ++k) {
         const double *xa = X + 3 * attach[k];
         const double dd[3] = {p[0] - xa[0], p[1] - xa[1], p[2] - xa[2]};
-        const double len = sqrt(dd[0] * dd[0] + dd[1] * dd[1] + dd[2] * dd[2]);
+        const double len = hypot(hypot(dd[0], dd[1]), dd[2]);
         total_segments += floor(len / spec->edge_length + 0.5) + 1.0;
+        const double q = floor(len / spec->edge_length + 0.5);
+        if (!(q <= CANOPY_BUILD_MAX_ITEMS)) continue; /* reported below */
+        char what[160];
+        snprintf(what, sizeof what, "the line from attach[%d] = node %d, of "
+                 "length %g (spec.line_length %g, spec.edge_length %g)", k,
+                 attach[k], len, L, spec->edge_length);
+        st = canopy_build_check_segment(model, who, what, len,
+                                        q < 1.0 ? 1 : (int)q, &spec->line);
+        if (st != CANOPY_OK) return st;
+        if (!isfinite(model->nodes.mass[attach[k]] +
+                      0.5 * spec->line.density * len / (q < 1.0 ? 1 : q)))
+            return canopy_fail(model, CANOPY_ERR_ARGUMENT,
+                               "%s: attach[%d] = node %d's mass %g cannot "
+                               "take its line's share", who, k, attach[k],
+                               model->nodes.mass[attach[k]]);
     }
     if (!(total_segments <= CANOPY_BUILD_MAX_ITEMS))
         return canopy_fail(model, CANOPY_ERR_ARGUMENT,
@@ -230,7 +258,7 @@ canopy_status canopy_build_suspension_lines(canopy_model *model,
     for (int k = 0; k < n_attach && st == CANOPY_OK; ++k) {
         const double *xa = model->nodes.x + 3 * attach[k];
         const double dd[3] = {p[0] - xa[0], p[1] - xa[1], p[2] - xa[2]};
-        const double len = sqrt(dd[0] * dd[0] + dd[1] * dd[1] + dd[2] * dd[2]);
+        const double len = hypot(hypot(dd[0], dd[1]), dd[2]);
         const double q = floor(len / spec->edge_length + 0.5);
         const int n_seg = q < 1.0 ? 1 : (int)q;
         double mc = 0.0;
@@ -240,9 +268,13 @@ canopy_status canopy_build_suspension_lines(canopy_model *model,
         if (st == CANOPY_OK) st = canopy_model_add_node_mass(model, conf, mc);
     }
     if (st != CANOPY_OK) {
-        canopy_build_rollback(model, &mark);
         free(owed);
-        return st;
+        char args[160];
+        snprintf(args, sizeof args, "spec.line_length %g, spec.edge_length "
+                 "%g and spec.payload_mass %g on %d attachments",
+                 spec->line_length, spec->edge_length, spec->payload_mass,
+                 n_attach);
+        return canopy_build_abort(model, &mark, st, who, args);
     }
     /* Nothing can fail from here (valid indices, finite masses >= 0): the
      * attachments, which existed before, get their half segments now. */

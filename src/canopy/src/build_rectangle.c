@@ -2,6 +2,7 @@
 #include "build_internal.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 
 /* The shape is a grid of x-segments [X_a, X_a+1] (nx[a] node spacings each)
@@ -125,10 +126,11 @@ static canopy_status lattice_fill(canopy_model *model, const lattice *L,
 }
 
 /* Plan rows, check sizes, allocate, build; on failure after the first node
- * roll back. `who` and `field` name the builder and its edge_length. */
+ * roll back. `who` names the builder, `args` the user's arguments that set
+ * the sizes (for the messages). */
 static canopy_status lattice_build(canopy_model *model, const lattice *L,
                                    const canopy_material *fabric,
-                                   const char *who, double edge)
+                                   const char *who, const char *args)
 {
     int nrows = 1;
     double row_max = 0.0;
@@ -136,9 +138,9 @@ static canopy_status lattice_build(canopy_model *model, const lattice *L,
     for (int a = 0; a < L->nxs; ++a) row_max += L->nx[a] + 2;
     if (!((double)nrows * row_max <= CANOPY_BUILD_MAX_ITEMS))
         return canopy_fail(model, CANOPY_ERR_ARGUMENT,
-                           "%s: spec.edge_length %g needs ~%.3g nodes, more "
-                           "than the builder's limit %.3g", who, edge,
-                           (double)nrows * row_max, CANOPY_BUILD_MAX_ITEMS);
+                           "%s: %s need ~%.3g nodes, more than the builder's "
+                           "limit %.3g", who, args, (double)nrows * row_max,
+                           CANOPY_BUILD_MAX_ITEMS);
     row_info *rows = calloc((size_t)nrows, sizeof *rows);
     if (rows == NULL)
         return canopy_fail(model, CANOPY_ERR_MEMORY,
@@ -180,7 +182,7 @@ static canopy_status lattice_build(canopy_model *model, const lattice *L,
     canopy_build_mark_take(model, &mark);
     canopy_status st = lattice_fill(model, L, fabric, rows, nrows, xall, chain,
                                     chain + widest);
-    if (st != CANOPY_OK) canopy_build_rollback(model, &mark);
+    if (st != CANOPY_OK) st = canopy_build_abort(model, &mark, st, who, args);
     free(xall);
     free(chain);
     free(rows);
@@ -216,7 +218,12 @@ canopy_status canopy_build_rectangle(canopy_model *model,
     const int ny = canopy_build_row_spacings(spec->length, spec->width / nx);
     const unsigned char cov = 1;
     const lattice L = {1, 1, X, Y, &nx, &ny, &cov, spec->origin[2]};
-    st = lattice_build(model, &L, &spec->fabric, who, e);
+    char args[200];
+    snprintf(args, sizeof args, "spec.width %g, spec.length %g and "
+             "spec.edge_length %g at spec.origin (%g, %g, %g)", spec->width,
+             spec->length, e, spec->origin[0], spec->origin[1],
+             spec->origin[2]);
+    st = lattice_build(model, &L, &spec->fabric, who, args);
     if (st == CANOPY_OK) canopy_clear_message(model);
     return st;
 }

@@ -203,6 +203,10 @@ canopy_status canopy_model_add_node_mass(canopy_model *model, int node,
         return canopy_fail(model, CANOPY_ERR_ARGUMENT,
                            "add_node_mass: mass %g for node %d must be finite "
                            "and >= 0", mass, node);
+    if (!isfinite(model->nodes.mass[node] + mass))
+        return canopy_fail(model, CANOPY_ERR_ARGUMENT,
+                           "add_node_mass: mass %g added to node %d's %g is "
+                           "not finite", mass, node, model->nodes.mass[node]);
     model->nodes.mass[node] += mass;
     topology_changed(model);
     canopy_clear_message(model);
@@ -256,6 +260,10 @@ canopy_status canopy_model_add_spring(canopy_model *model, int i, int j,
         return canopy_fail(model, CANOPY_ERR_ARGUMENT,
                            "add_spring %d-%d: zero rest length (nodes "
                            "coincide)", i, j);
+    if (!isfinite(l0))
+        return canopy_fail(model, CANOPY_ERR_ARGUMENT,
+                           "add_spring %d-%d: rest length %g is not finite "
+                           "(nodes too far apart)", i, j, l0);
     st = reserve_springs(model, model->springs.count + 1);
     if (st != CANOPY_OK) return st;
     canopy_springs *s = &model->springs;
