@@ -309,3 +309,79 @@ CANOPY_TEST(robust_chord_and_lines_degenerate)
                  "not finite");
     canopy_model_destroy(&m);
 }
+
+/* The bytes of a file (NULL if it cannot be read); *size receives its size. */
+static unsigned char *slurp(const char *path, long *size)
+{
+    FILE *fp = fopen(path, "rb");
+    if (fp == NULL) return NULL;
+    fseek(fp, 0, SEEK_END);
+    *size = ftell(fp);
+    fseek(fp, 0, SEEK_SET);
+    unsigned char *b = malloc((size_t)*size + 1);
+    if (b && fread(b, 1, (size_t)*size, fp) != (size_t)*size) {
+        free(b);
+        b = NULL;
+    }
+    fclose(fp);
+    return b;
+}
+
+CANOPY_TEST(robust_append_leaves_bad_file_alone)
+{
+    canopy_model *m = NULL;
+    ASSERT_OK(m, canopy_model_create(&m));
+    ASSERT_OK(m, hht_membrane(m));
+    state before;
+    take(m, &before);
+    char stem[] = "/tmp/canopy-robust-append-XXXXXX";
+    const int fd = mkstemp(stem);
+    ASSERT_TRUE(fd >= 0);
+    close(fd);
+    char h5[64], xdmf[64];
+    snprintf(h5, sizeof h5, "%s.h5", stem);
+    snprintf(xdmf, sizeof xdmf, "%s.xdmf", stem);
+    /* An empty path.h5 (used to be left an 800-byte HDF5 file). */
+    FILE *fp = fopen(h5, "wb");
+    ASSERT_TRUE(fp != NULL);
+    if (fp) fclose(fp);
+    canopy_output *o = NULL;
+    ASSERT_FRESH(m, CANOPY_ERR_IO,
+                 canopy_output_create(m, stem, CANOPY_OUTPUT_APPEND, &o),
+                 "output_create");
+    ASSERT_MESSAGE_HAS(m, h5);
+    ASSERT_TRUE(o == NULL);
+    long size = -1;
+    unsigned char *bytes = slurp(h5, &size);
+    ASSERT_TRUE(bytes != NULL && size == 0);
+    free(bytes);
+    ASSERT_TRUE(access(xdmf, F_OK) != 0);
+    /* Another model's file: FORMAT, both files byte-identical. */
+    canopy_model *other = NULL;
+    ASSERT_OK(other, canopy_model_create(&other));
+    ASSERT_OK(other, membrane_fixture(other, 3, 0.1, 100.0, 0.0, 0.01));
+    ASSERT_OK(other, canopy_output_create(other, stem, CANOPY_OUTPUT_CREATE,
+                                          &o));
+    ASSERT_OK(other, canopy_output_write(o, other));
+    canopy_output_destroy(&o);
+    long h5_size = 0, xdmf_size = 0;
+    unsigned char *h5_bytes = slurp(h5, &h5_size);
+    unsigned char *xdmf_bytes = slurp(xdmf, &xdmf_size);
+    ASSERT_TRUE(h5_bytes != NULL && xdmf_bytes != NULL);
+    ASSERT_FRESH(m, CANOPY_ERR_FORMAT,
+                 canopy_output_create(m, stem, CANOPY_OUTPUT_APPEND, &o),
+                 "output_create");
+    long s1 = 0, s2 = 0;
+    unsigned char *h5_after = slurp(h5, &s1), *xdmf_after = slurp(xdmf, &s2);
+    ASSERT_TRUE(h5_after && s1 == h5_size &&
+                memcmp(h5_after, h5_bytes, (size_t)s1) == 0);
+    ASSERT_TRUE(xdmf_after && s2 == xdmf_size &&
+                memcmp(xdmf_after, xdmf_bytes, (size_t)s2) == 0);
+    free(h5_bytes); free(xdmf_bytes); free(h5_after); free(xdmf_after);
+    assert_untouched(m, &before);
+    unlink(h5);
+    unlink(xdmf);
+    unlink(stem);
+    canopy_model_destroy(&other);
+    canopy_model_destroy(&m);
+}

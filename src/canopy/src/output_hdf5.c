@@ -493,11 +493,45 @@ static int time_is_later(double t, double reference)
     return t > reference + 1e-12 * scale;
 }
 
+/* APPEND, first: is the file a canopy output of this model with a readable
+ * step list? Checked read-only, so that a file that is not (empty, not
+ * HDF5, another model's, damaged) is left byte for byte as it was: HDF5
+ * opening a file for writing may write to it even when reading it fails. */
+static canopy_status check_for_append(canopy_output *o, const canopy_model *m,
+                                      hid_t fapl)
+{
+    hid_t file = H5Fopen(o->h5_path, H5F_ACC_RDONLY, fapl);
+    if (file < 0) {
+        if (access(o->h5_path, F_OK) != 0)
+            return out_fail(o, CANOPY_ERR_IO, "cannot append: %s '%s' does "
+                            "not exist", "the HDF5 file");
+        return out_fail(o, CANOPY_ERR_IO, "cannot open %s '%s' to append "
+                        "(unreadable or not an HDF5 file)", "HDF5 file");
+    }
+    canopy_h5_counts counts;
+    canopy_output_step *steps = NULL;
+    int count = 0;
+    canopy_status st = canopy_h5_read_counts(file, o->h5_path, &counts,
+                                             o->message, sizeof o->message);
+    if (st == CANOPY_OK)
+        st = canopy_h5_check_counts(&counts, m, o->h5_path, o->message,
+                                    sizeof o->message);
+    if (st == CANOPY_OK)
+        st = canopy_h5_list_steps(file, o->h5_path, &steps, &count,
+                                  o->message, sizeof o->message);
+    free(steps);
+    if (H5Fclose(file) < 0 && st == CANOPY_OK)
+        st = out_fail(o, CANOPY_ERR_IO, "cannot close %s '%s'", "HDF5 file");
+    return st;
+}
+
 /* APPEND: check the file matches, drop the steps later than the model's
  * time, and continue after the last kept step. */
 static canopy_status open_for_append(canopy_output *o, const canopy_model *m,
                                      hid_t fapl)
 {
+    canopy_status checked = check_for_append(o, m, fapl);
+    if (checked != CANOPY_OK) return checked;
     o->file = H5Fopen(o->h5_path, H5F_ACC_RDWR, fapl);
     if (o->file < 0) {
         if (access(o->h5_path, F_OK) != 0)
