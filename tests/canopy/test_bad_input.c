@@ -11,7 +11,7 @@ CANOPY_TEST(bad_input_building)
     ASSERT_OK(m, membrane_fixture(m, 4, 0.1, 100.0, 0.0, 0.01));
     const int n = canopy_model_node_count(m), ns = canopy_model_spring_count(m),
               nt = canopy_model_triangle_count(m);
-    double x_before[48], x_after[48];
+    double x_before[48], x_after[48 + 6]; /* n + 2 nodes at the end */
     ASSERT_OK(m, canopy_model_get_positions(m, x_before, n));
 
     /* Negative mass. */
