@@ -385,3 +385,29 @@ CANOPY_TEST(robust_append_leaves_bad_file_alone)
     canopy_model_destroy(&other);
     canopy_model_destroy(&m);
 }
+
+CANOPY_TEST(robust_controls_bounded)
+{
+    canopy_model *m = NULL;
+    ASSERT_OK(m, canopy_model_create(&m));
+    ASSERT_OK(m, hht_membrane(m));
+    state before;
+    take(m, &before);
+    /* An iteration limit that would let one step run for hours. */
+    ASSERT_FRESH(m, CANOPY_ERR_ARGUMENT,
+                 canopy_model_set_implicit_controls(m, 1e-10, 2147483647),
+                 "max_iterations 2147483647 in [1, 1000]");
+    ASSERT_FRESH(m, CANOPY_ERR_ARGUMENT,
+                 canopy_model_set_implicit_controls(m, NAN, 10),
+                 "tolerance nan");
+    ASSERT_OK(m, canopy_model_set_implicit_controls(m, 1e-10, 1000));
+    /* A circular canopy out of double precision's range is named so. */
+    canopy_circular_spec c = canopy_circular_spec_default();
+    c.diameter = 1e-200;
+    c.edge_length = 2e-201;
+    ASSERT_FRESH(m, CANOPY_ERR_ARGUMENT, canopy_build_circular(m, &c, NULL),
+                 "spec.diameter 1e-200");
+    ASSERT_MESSAGE_HAS(m, "double precision");
+    assert_untouched(m, &before);
+    canopy_model_destroy(&m);
+}

@@ -373,8 +373,8 @@ int canopy_integrator_order(int i);
 canopy_status canopy_model_set_max_omega_dt(canopy_model *model, double value);
 /* HHT alpha in [-1/3, 0] (default -0.1); 0 is Newmark average acceleration. */
 canopy_status canopy_model_set_hht_alpha(canopy_model *model, double alpha);
-/* Newton tolerance (relative residual, default 1e-10) and iteration limit
- * (default 25) of the implicit integrators. */
+/* Newton tolerance (relative residual, finite and > 0, default 1e-10) and
+ * iteration limit (1 to 1000, default 25) of the implicit integrators. */
 canopy_status canopy_model_set_implicit_controls(canopy_model *model,
                                                  double tolerance,
                                                  int max_iterations);

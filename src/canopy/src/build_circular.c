@@ -447,6 +447,13 @@ static canopy_status plan_rings(canopy_model *model,
     if (sf->gores_to_vent) rings_est += n_att * log(1.0 + n_att * e / sf->rv);
     const double nodes_est =
         (s1 * s1 - s0 * s0) * 3.2 / (h * e) + rings_est * 2.0 * n_att;
+    if (!isfinite(nodes_est))
+        return canopy_fail(model, CANOPY_ERR_ARGUMENT,
+                           WHO ": spec.diameter %g, spec.vent_diameter %g, "
+                           "spec.height %g and spec.edge_length %g are out "
+                           "of the range the builder can mesh in double "
+                           "precision", spec->diameter, spec->vent_diameter,
+                           spec->height, e);
     if (!(nodes_est <= CANOPY_BUILD_MAX_ITEMS))
         return canopy_fail(model, CANOPY_ERR_ARGUMENT,
                            WHO ": spec.edge_length %g (with spec.diameter %g, "

@@ -5,6 +5,10 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* Most Newton iterations a step may be given (set_implicit_controls): a
+ * bound on the time one step can take. */
+#define CANOPY_MAX_NEWTON_ITERATIONS 1000
+
 #define NULL_MODEL_CHECK(model) \
     do { if ((model) == NULL) return CANOPY_ERR_ARGUMENT; } while (0)
 
@@ -671,7 +675,8 @@ static canopy_status store_added_mass(canopy_model *model,
         model->nodes.added_mass[i] = added_mass[i];
         if (direction == NULL || !(added_mass[i] > 0.0)) continue;
         const double *d = direction + 3 * i;
-        const double len = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+        /* hypot: neither overflows nor underflows for finite d */
+        const double len = hypot(hypot(d[0], d[1]), d[2]);
         if (len > 0.0) {
             u[0] = d[0] / len; u[1] = d[1] / len; u[2] = d[2] / len;
             directional = 1;
@@ -764,11 +769,13 @@ canopy_status canopy_model_set_implicit_controls(canopy_model *model,
                                                  int max_iterations)
 {
     NULL_MODEL_CHECK(model);
-    if (!(tolerance > 0.0) || !isfinite(tolerance) || max_iterations < 1)
+    if (!(tolerance > 0.0) || !isfinite(tolerance) || max_iterations < 1 ||
+        max_iterations > CANOPY_MAX_NEWTON_ITERATIONS)
         return canopy_fail(model, CANOPY_ERR_ARGUMENT,
-                           "set_implicit_controls: tolerance %g must be > 0 "
-                           "and max_iterations %d >= 1", tolerance,
-                           max_iterations);
+                           "set_implicit_controls: tolerance %g must be "
+                           "finite and > 0 and max_iterations %d in [1, %d]",
+                           tolerance, max_iterations,
+                           CANOPY_MAX_NEWTON_ITERATIONS);
     model->implicit_tol = tolerance;
     model->implicit_max_iter = max_iterations;
     canopy_clear_message(model);
