@@ -1,6 +1,7 @@
 /* model.c — creating, building, validating and querying a canopy_model. */
 #include "integrator.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -34,18 +35,30 @@ static int grow(void **p, size_t size, int old_cap, int new_cap)
     return 1;
 }
 
+/* Doubling from cap until need fits; saturates at INT_MAX (need is at most
+ * INT_MAX: the reserve_* functions refuse a count that cannot grow). */
 static int next_capacity(int cap, int need)
 {
     int c = cap > 0 ? cap : 64;
-    while (c < need) c *= 2;
+    while (c < need) c = c > INT_MAX / 2 ? INT_MAX : 2 * c;
     return c;
 }
 
-static canopy_status reserve_nodes(canopy_model *m, int need)
+/* The count after adding one, if an int holds it. */
+static int count_can_grow(int count)
+{
+    return count < INT_MAX;
+}
+
+/* Room for one more entry. */
+static canopy_status reserve_nodes(canopy_model *m)
 {
     canopy_nodes *n = &m->nodes;
-    if (need <= n->capacity) return CANOPY_OK;
-    int cap = next_capacity(n->capacity, need), old = n->capacity;
+    if (n->count < n->capacity) return CANOPY_OK;
+    if (!count_can_grow(n->count))
+        return canopy_fail(m, CANOPY_ERR_RANGE, "the model holds %d nodes, "
+                           "the most an int can count", n->count);
+    int cap = next_capacity(n->capacity, n->count + 1), old = n->capacity;
     if (!grow((void **)&n->x, 3 * sizeof(double), old, cap) ||
         !grow((void **)&n->v, 3 * sizeof(double), old, cap) ||
         !grow((void **)&n->mass, sizeof(double), old, cap) ||
@@ -64,11 +77,15 @@ static canopy_status reserve_nodes(canopy_model *m, int need)
     return CANOPY_OK;
 }
 
-static canopy_status reserve_springs(canopy_model *m, int need)
+/* Room for one more entry. */
+static canopy_status reserve_springs(canopy_model *m)
 {
     canopy_springs *s = &m->springs;
-    if (need <= s->capacity) return CANOPY_OK;
-    int cap = next_capacity(s->capacity, need), old = s->capacity;
+    if (s->count < s->capacity) return CANOPY_OK;
+    if (!count_can_grow(s->count))
+        return canopy_fail(m, CANOPY_ERR_RANGE, "the model holds %d springs, "
+                           "the most an int can count", s->count);
+    int cap = next_capacity(s->capacity, s->count + 1), old = s->capacity;
     if (!grow((void **)&s->ends, 2 * sizeof(int), old, cap) ||
         !grow((void **)&s->rest, sizeof(double), old, cap) ||
         !grow((void **)&s->rest_vec, 3 * sizeof(double), old, cap) ||
@@ -83,11 +100,15 @@ static canopy_status reserve_springs(canopy_model *m, int need)
     return CANOPY_OK;
 }
 
-static canopy_status reserve_triangles(canopy_model *m, int need)
+/* Room for one more entry. */
+static canopy_status reserve_triangles(canopy_model *m)
 {
     canopy_triangles *t = &m->tris;
-    if (need <= t->capacity) return CANOPY_OK;
-    int cap = next_capacity(t->capacity, need), old = t->capacity;
+    if (t->count < t->capacity) return CANOPY_OK;
+    if (!count_can_grow(t->count))
+        return canopy_fail(m, CANOPY_ERR_RANGE, "the model holds %d "
+                           "triangles, the most an int can count", t->count);
+    int cap = next_capacity(t->capacity, t->count + 1), old = t->capacity;
     if (!grow((void **)&t->nodes, 3 * sizeof(int), old, cap) ||
         !grow((void **)&t->dp, sizeof(double), old, cap)) {
         return canopy_fail(m, CANOPY_ERR_MEMORY,
@@ -179,7 +200,7 @@ canopy_status canopy_model_add_node(canopy_model *model, const double x[3],
     if ((int)group < 0 || group > CANOPY_GROUP_OTHER)
         return canopy_fail(model, CANOPY_ERR_ARGUMENT,
                            "add_node: unknown group %d", (int)group);
-    canopy_status st = reserve_nodes(model, model->nodes.count + 1);
+    canopy_status st = reserve_nodes(model);
     if (st != CANOPY_OK) return st;
     canopy_nodes *n = &model->nodes;
     int i = n->count++;
@@ -268,7 +289,7 @@ canopy_status canopy_model_add_spring(canopy_model *model, int i, int j,
         return canopy_fail(model, CANOPY_ERR_ARGUMENT,
                            "add_spring %d-%d: rest length %g is not finite "
                            "(nodes too far apart)", i, j, l0);
-    st = reserve_springs(model, model->springs.count + 1);
+    st = reserve_springs(model);
     if (st != CANOPY_OK) return st;
     canopy_springs *s = &model->springs;
     int k = s->count++;
@@ -318,7 +339,7 @@ canopy_status canopy_model_add_triangle(canopy_model *model, int a, int b,
         return canopy_fail(model, CANOPY_ERR_ARGUMENT,
                            "add_triangle: nodes %d %d %d are not distinct", a,
                            b, c);
-    st = reserve_triangles(model, model->tris.count + 1);
+    st = reserve_triangles(model);
     if (st != CANOPY_OK) return st;
     int t = model->tris.count++;
     model->tris.nodes[3 * t] = a;

@@ -218,6 +218,7 @@ typedef struct fuzz {
     FILE *report;
     canopy_model *m;
     canopy_output *out;
+    int out_stem;               /* f->stem index the output writes */
     char dir[256];
     char stem[FUZZ_PATHS][300];
     canopy_fuzz_counts *c;
@@ -1022,6 +1023,7 @@ static void act_files(fuzz *f)
                                   CANOPY_OUTPUT_CREATE,
                                   rnd(f, 30) ? &f->out : NULL);
         after_call(f, st, KIND_QUERY, 0);
+        if (st == CANOPY_OK) f->out_stem = which;
         if (st == CANOPY_OK && rnd(f, 2)) make_bad_files(f);
         break;
     }
@@ -1033,6 +1035,7 @@ static void act_files(fuzz *f)
                                              : (canopy_output_mode)7,
                                   &f->out);
         after_call(f, st, KIND_QUERY, 2);
+        if (st == CANOPY_OK) f->out_stem = k;
         break;
     }
     case 2:
@@ -1044,6 +1047,10 @@ static void act_files(fuzz *f)
         if (canopy_output_write(f->out, NULL) != CANOPY_ERR_ARGUMENT)
             violation(f, "output_write(NULL model) was not rejected", NULL);
         snapshot_take(f->m, &f->before);
+        path_of(f, f->out_stem, ".h5", file_path[0], sizeof file_path[0]);
+        path_of(f, f->out_stem, ".xdmf", file_path[1], sizeof file_path[1]);
+        for (int i = 0; i < 2; ++i)
+            file_image_take(file_path[i], &f->file_before[i]);
         const int steps = canopy_output_step_count(f->out);
         check_quiet(f);
         st = canopy_output_write(f->out, f->m);
@@ -1056,6 +1063,12 @@ static void act_files(fuzz *f)
             if (canopy_output_step_count(f->out) != steps)
                 violation(f, "a rejected output_write changed the step count",
                           NULL);
+            for (int i = 0; i < 2; ++i) {
+                file_image_take(file_path[i], &f->file_after[i]);
+                if (!file_image_same(&f->file_before[i], &f->file_after[i]))
+                    violation(f, "a rejected output_write changed the file",
+                              file_path[i]);
+            }
             snapshot_take(f->m, &f->after);
             const char *d = snapshot_diff(&f->before, &f->after);
             if (d) violation(f, "output_write changed the model's", d);
