@@ -5,6 +5,7 @@
 #include <hdf5.h>
 
 #include <stdint.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 /* A message no call under test would set: a rejection must replace it. */
@@ -409,5 +410,57 @@ CANOPY_TEST(robust_controls_bounded)
                  "spec.diameter 1e-200");
     ASSERT_MESSAGE_HAS(m, "double precision");
     assert_untouched(m, &before);
+    canopy_model_destroy(&m);
+}
+
+CANOPY_TEST(robust_failed_create_keeps_old_files)
+{
+    canopy_model *m = NULL;
+    ASSERT_OK(m, canopy_model_create(&m));
+    ASSERT_OK(m, hht_membrane(m));
+    char stem[] = "/tmp/canopy-robust-create-XXXXXX";
+    const int fd = mkstemp(stem);
+    ASSERT_TRUE(fd >= 0);
+    close(fd);
+    char h5[64], xdmf[64], tmp[64];
+    snprintf(h5, sizeof h5, "%s.h5", stem);
+    snprintf(xdmf, sizeof xdmf, "%s.xdmf", stem);
+    snprintf(tmp, sizeof tmp, "%s.h5.tmp", stem);
+    canopy_output *o = NULL;
+    ASSERT_OK(m, canopy_output_create(m, stem, CANOPY_OUTPUT_CREATE, &o));
+    ASSERT_OK(m, canopy_output_write(o, m));
+    canopy_output_destroy(&o);
+    long size = 0;
+    unsigned char *old = slurp(h5, &size);
+    ASSERT_TRUE(old != NULL && size > 0);
+    /* The sidecar's name is taken by a directory: create fails before it
+     * replaces path.h5 (it used to truncate it first). */
+    ASSERT_TRUE(remove(xdmf) == 0);
+    ASSERT_TRUE(mkdir(xdmf, 0700) == 0);
+    ASSERT_FRESH(m, CANOPY_ERR_IO,
+                 canopy_output_create(m, stem, CANOPY_OUTPUT_CREATE, &o),
+                 "not a regular file");
+    ASSERT_TRUE(o == NULL);
+    long now_size = 0;
+    unsigned char *now = slurp(h5, &now_size);
+    ASSERT_TRUE(now && now_size == size && memcmp(now, old, (size_t)size) == 0);
+    ASSERT_TRUE(access(tmp, F_OK) != 0);
+    /* Once the name is free again, create replaces both. */
+    ASSERT_TRUE(rmdir(xdmf) == 0);
+    ASSERT_OK(m, canopy_output_create(m, stem, CANOPY_OUTPUT_CREATE, &o));
+    ASSERT_TRUE(canopy_output_step_count(o) == 0);
+    ASSERT_OK(m, canopy_output_write(o, m));
+    ASSERT_TRUE(access(xdmf, F_OK) == 0 && access(tmp, F_OK) != 0);
+    canopy_output_destroy(&o);
+    canopy_model *copy = NULL;
+    ASSERT_OK(copy, canopy_model_create(&copy));
+    ASSERT_OK(copy, membrane_fixture(copy, 4, 0.1, 100.0, 0.0, 0.01));
+    ASSERT_OK(copy, canopy_model_read_state(copy, stem, -1));
+    free(old);
+    free(now);
+    unlink(h5);
+    unlink(xdmf);
+    unlink(stem);
+    canopy_model_destroy(&copy);
     canopy_model_destroy(&m);
 }

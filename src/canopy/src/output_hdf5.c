@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 /* Every HDF5 call of this file runs with HDF5's automatic error printing
@@ -610,6 +611,44 @@ static canopy_status open_for_append(canopy_output *o, const canopy_model *m,
     return CANOPY_OK;
 }
 
+/* CREATE: the new file is written under a temporary name and renamed over
+ * path.h5 only once its mesh is written and flushed, and the old sidecar
+ * removed after that, so a failed create leaves both files as they were
+ * (HDF5 keeps writing through its open descriptor after the rename). */
+static canopy_status create_new(canopy_output *o, const canopy_model *m,
+                                hid_t fapl)
+{
+    struct stat sb;
+    if (stat(o->xdmf_path, &sb) == 0 && !S_ISREG(sb.st_mode))
+        return canopy_format_message(o->message, sizeof o->message,
+                                     CANOPY_ERR_IO, "cannot replace '%s': "
+                                     "not a regular file", o->xdmf_path);
+    char *tmp = canopy_path_with_ext(o->h5_path, ".tmp");
+    if (tmp == NULL)
+        return out_fail(o, CANOPY_ERR_MEMORY, "no memory for %s of '%s'",
+                        "the temporary name");
+    canopy_status st = CANOPY_OK;
+    o->file = H5Fcreate(tmp, H5F_ACC_TRUNC, H5P_DEFAULT, fapl);
+    if (o->file < 0)
+        st = out_fail(o, CANOPY_ERR_IO, "cannot create %s '%s' (does the "
+                      "directory exist and is it writable?)", "HDF5 file");
+    else if ((st = write_mesh(o, m)) == CANOPY_OK &&
+             H5Fflush(o->file, H5F_SCOPE_LOCAL) < 0)
+        st = out_fail(o, CANOPY_ERR_IO, "cannot flush %s '%s'", "HDF5 file");
+    if (st == CANOPY_OK && rename(tmp, o->h5_path) != 0)
+        st = out_fail(o, CANOPY_ERR_IO, "cannot rename %s to '%s'",
+                      "the new HDF5 file");
+    if (st != CANOPY_OK) {
+        if (o->file >= 0) H5Fclose(o->file);
+        o->file = -1;
+        remove(tmp);
+        free(tmp);
+        return st;
+    }
+    free(tmp);
+    return rewrite_xdmf(o, NULL, 0); /* removes the old sidecar */
+}
+
 static canopy_status create_impl(canopy_model *m, const char *path,
                                  canopy_output_mode mode, canopy_output **out)
 {
@@ -640,18 +679,7 @@ static canopy_status create_impl(canopy_model *m, const char *path,
     } else if (mode == CANOPY_OUTPUT_APPEND) {
         st = open_for_append(o, m, fapl);
     } else {
-        o->file = H5Fcreate(o->h5_path, H5F_ACC_TRUNC, H5P_DEFAULT, fapl);
-        if (o->file < 0)
-            st = out_fail(o, CANOPY_ERR_IO, "cannot create %s '%s' (does "
-                          "the directory exist and is it writable?)",
-                          "HDF5 file");
-        else if ((st = write_mesh(o, m)) == CANOPY_OK) {
-            if (H5Fflush(o->file, H5F_SCOPE_LOCAL) < 0)
-                st = out_fail(o, CANOPY_ERR_IO, "cannot flush %s '%s'",
-                              "HDF5 file");
-            else
-                st = rewrite_xdmf(o, NULL, 0);
-        }
+        st = create_new(o, m, fapl);
     }
     if (fapl >= 0) H5Pclose(fapl);
     if (st != CANOPY_OK) {
