@@ -309,10 +309,13 @@ canopy_status canopy_model_get_velocities(const canopy_model *model, double *v,
                                           int n);
 canopy_status canopy_model_set_velocities(canopy_model *model, const double *v,
                                           int n);
-/* Integrator state beyond (t, x, v): HHT carries each step's acceleration
- * (3*n doubles) into the next. *valid = 0 when there is none (any other
- * integrator, or after positions/velocities were set). Output stores it and
- * canopy_model_read_state restores it, so restarts are exact. */
+/* Integrator state beyond (t, x, v): newmark and hht end each step with
+ * the acceleration a_{n+1} of their equation (M + added mass) a = F, and
+ * hht carries it into the next step (3*n doubles). The implicit hinge
+ * dashpots' velocity update after the step leaves it as it is. *valid = 0
+ * when there is none (any other integrator, or after positions/velocities
+ * were set). Output stores it and canopy_model_read_state restores it, so
+ * restarts are exact. */
 canopy_status canopy_model_get_acceleration_state(const canopy_model *model,
                                                   double *a, int n,
                                                   int *valid);
@@ -381,7 +384,9 @@ canopy_status canopy_model_set_implicit_controls(canopy_model *model,
 /* Bending dashpots (hinge damping): every edge shared by two triangles
  * damps the rate of its dihedral angle theta with the force
  *   f_i = -c (dtheta/dt) dtheta/dx_i,  c = rate / sum_a (|dtheta/dx_a|^2 / m_a)
- * over the hinge's four nodes a (fixed nodes left out), so that each
+ * over the hinge's four nodes a (fixed nodes left out; m_a their own
+ * masses, without any added mass, so every free node needs one:
+ * CANOPY_ERR_STATE otherwise), so that each
  * hinge's bending, on its own, decays at `rate` [1/s] whatever the
  * triangles' size. Rigid motion and in-plane motion are not damped; the
  * out-of-plane flapping of single triangles, which the springs' dashpots
@@ -393,7 +398,11 @@ canopy_status canopy_model_set_bending_damping(canopy_model *model,
  * after every (sub-)step h of any integrator as the backward-Euler update
  *   (M + h C) v' = M v,   C = sum over hinges of c u u^T at the new shape
  * (Lie splitting, first order in h for the dashpots; solved by conjugate
- * gradients). It only dissipates, keeps linear and angular momentum and is
+ * gradients). M is the nodes' own mass: an added mass (set_added_mass)
+ * acts in the integrator's equation only, so a caller that balances it
+ * there with the step's end acceleration (get_acceleration_state) removes
+ * it from the whole step. It only dissipates, keeps linear and angular
+ * momentum and is
  * stable for any h, so the frequency bound leaves the hinges out: a large
  * rate no longer shortens the stable step. Default 0 (explicit). The
  * forces of canopy_model_get_forces include the dashpots either way. */

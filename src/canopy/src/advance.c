@@ -74,10 +74,11 @@ static canopy_status raw_step(canopy_model *model, double dt, int substep)
     canopy_status st = model->integrator->step(model, dt);
     if (st != CANOPY_OK) return st;
     if (!model->integrator->carries_acceleration) model->acc_valid = 0;
+    /* The hinge dashpots' split update changes v only; the integrator's
+     * carried acceleration stays its own step's (bending_implicit.c). */
     if (model->bending_implicit && model->hinges.count) {
         st = canopy_hinge_damping_implicit_update(model, dt);
         if (st != CANOPY_OK) return st;
-        model->acc_valid = 0; /* v changed after the step's acceleration */
     }
     model->t += dt;
     double speed = 0.0;

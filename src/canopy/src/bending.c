@@ -124,7 +124,10 @@ canopy_status canopy_hinges_build(canopy_model *m)
 }
 
 /* The bending modes u (4 x 3) and the dashpot c of hinge k at x; 0 for a
- * degenerate hinge (a triangle of zero area). */
+ * degenerate hinge (a triangle of zero area). c gives the hinge's bending
+ * the decay rate m->bending_damping with the nodes' own masses: an added
+ * mass (set_added_mass) changes neither c nor the update of
+ * bending_implicit.c. */
 int canopy_hinge_modes(const canopy_model *m, const double *x, int k,
                        double u[4][3], double *c)
 {
@@ -159,14 +162,20 @@ int canopy_hinge_modes(const canopy_model *m, const double *x, int k,
         u[2][d] = s1 * a1 + s2 * a2;
         u[3][d] = -(u[0][d] + u[1][d] + u[2][d]);
     }
-    double inv_inertia = 0.0;
+    double inv_inertia = 0.0, all = 0.0, free = 0.0;
     for (int a = 0; a < 4; ++a) {
         const int i = hn[a];
+        const double u2 = u[a][0] * u[a][0] + u[a][1] * u[a][1] +
+                          u[a][2] * u[a][2];
+        all += u2;
         if (m->nodes.fixed[i]) continue;
-        inv_inertia += (u[a][0] * u[a][0] + u[a][1] * u[a][1] +
-                        u[a][2] * u[a][2]) / canopy_effective_mass(m, i);
+        free += u2;
+        inv_inertia += u2 / m->nodes.mass[i];
     }
-    if (!(inv_inertia > 0.0)) return 0;
+    /* Free nodes on the hinge's axis only, beside fixed wings (a pinned
+     * edge): their modes are round-off, c u u^T would damp them along a
+     * direction of noise. The hinge cannot bend; leave it out. */
+    if (!(inv_inertia > 0.0) || !(free > 1e-16 * all)) return 0;
     *c = m->bending_damping / inv_inertia;
     return 1;
 }

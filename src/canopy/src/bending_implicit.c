@@ -12,9 +12,13 @@
  * stable for any h. Fixed nodes keep their velocity; it enters the free
  * nodes' right-hand side. Solved for the increment d = v' - v:
  *   (M_ff + h C_ff) d = -h (C v)_f
- * by conjugate gradients with the diagonal as preconditioner. M is block
- * diagonal: m I, plus m_a I or, for a directional added mass along the
- * unit vector e, m_a e e^T. With the high-pass filter on, C is
+ * by conjugate gradients with the diagonal as preconditioner. M is the
+ * nodes' own mass m I, without the added mass of set_(directional_)added_
+ * mass: that inertia belongs to the integrator's equation, where a coupled
+ * solver balances it with the step's end acceleration (the integrator's
+ * carried acceleration, which this update leaves as it is), so that a
+ * balanced added mass changes neither part of the step. With the high-pass
+ * filter on, C is
  * P^T F C F P (bending_filter.c): still symmetric positive semi-definite,
  * with 1^T P^T = 0. */
 
@@ -81,13 +85,8 @@ static void apply_mass(const canopy_model *m, const double *w, double *y)
 {
     const canopy_nodes *n = &m->nodes;
     for (int i = 0; i < n->count; ++i) {
-        double *yi = y + 3 * i;
-        const double *wi = w + 3 * i;
-        if (n->fixed[i]) {
-            yi[0] = yi[1] = yi[2] = 0.0;
-            continue;
-        }
-        canopy_inertia_apply(m, i, wi, yi);
+        const double mi = n->fixed[i] ? 0.0 : n->mass[i];
+        for (int d = 0; d < 3; ++d) y[3 * i + d] = mi * w[3 * i + d];
     }
 }
 
@@ -96,10 +95,8 @@ static void diagonal(canopy_model *m, double h, double *diag)
 {
     const canopy_nodes *n = &m->nodes;
     for (int i = 0; i < n->count; ++i) {
-        if (n->fixed[i])
-            diag[3 * i] = diag[3 * i + 1] = diag[3 * i + 2] = 1.0;
-        else
-            canopy_inertia_diagonal(m, i, diag + 3 * i);
+        const double mi = n->fixed[i] ? 1.0 : n->mass[i];
+        diag[3 * i] = diag[3 * i + 1] = diag[3 * i + 2] = mi;
     }
     for (int k = 0; k < m->hinges.count; ++k) {
         const double *u = m->hinges.modes + 13 * k;

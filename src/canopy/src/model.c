@@ -408,8 +408,13 @@ canopy_status canopy_model_prepare(canopy_model *model)
     const canopy_nodes *n = &model->nodes;
     if (n->count == 0)
         return canopy_fail(model, CANOPY_ERR_STATE, "the model has no nodes");
+    /* The hinge dashpots are sized by, and the implicit ones act on, the
+     * nodes' own masses (bending.c): an added mass cannot stand in there. */
+    const int own_mass = model->bending_damping > 0.0;
     for (int i = 0; i < n->count; ++i) {
-        if (!n->fixed[i] && !(canopy_effective_mass(model, i) > 0.0))
+        if (n->fixed[i]) continue;
+        if (!(canopy_effective_mass(model, i) > 0.0) ||
+            (own_mass && !(n->mass[i] > 0.0)))
             return canopy_fail(model, CANOPY_ERR_STATE,
                                "node %d is free but has zero mass", i);
     }

@@ -284,7 +284,11 @@ Foam::tmp<Foam::vectorField> Foam::canopyStructure::accelerationState() const
     );
     if (!valid)
     {
-        tfld.ref() = Zero;
+        FatalErrorInFunction
+            << "The structure holds no step-end acceleration (integrator "
+            << integrator() << " at t = " << time() << "): only newmark and "
+            << "hht keep one, from the end of their last step"
+            << exit(FatalError);
     }
     return tfld;
 }
