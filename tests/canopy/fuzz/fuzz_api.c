@@ -469,7 +469,7 @@ enum {
 /* Called before and after every call under test. files: the number of
  * output files (0..2, paths in f->file_path) the call must leave alone if
  * it is rejected. */
-static char file_path[2][320];
+static char file_path[2][420];
 
 static void before_call(fuzz *f, const char *action, int files)
 {
@@ -1018,11 +1018,13 @@ static void act_files(fuzz *f)
         char path[400];
         if (which == 8) snprintf(path, sizeof path, "%s/no/such/dir/x", f->dir);
         else snprintf(path, sizeof path, "%s", f->stem[which]);
-        before_call(f, "output_create CREATE", 0);
+        snprintf(file_path[0], sizeof file_path[0], "%s.h5", path);
+        snprintf(file_path[1], sizeof file_path[1], "%s.xdmf", path);
+        before_call(f, "output_create CREATE", 2);
         st = canopy_output_create(f->m, rnd(f, 30) ? path : NULL,
                                   CANOPY_OUTPUT_CREATE,
                                   rnd(f, 30) ? &f->out : NULL);
-        after_call(f, st, KIND_QUERY, 0);
+        after_call(f, st, KIND_QUERY, 2);
         if (st == CANOPY_OK) f->out_stem = which;
         if (st == CANOPY_OK && rnd(f, 2)) make_bad_files(f);
         break;
