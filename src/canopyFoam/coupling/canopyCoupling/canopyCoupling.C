@@ -13,6 +13,7 @@
 #include "treeDataCell.H"
 #include "indexedOctree.H"
 #include "pressureFaceGradient.H"
+#include "inletOutletFvPatchFields.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -685,6 +686,32 @@ Foam::canopyCoupling::canopyCoupling
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+void Foam::canopyCoupling::setFarField
+(
+    fvPatchVectorField& Up,
+    const vector& value
+) const
+{
+    // inletOutlet (a side of the box): the far field where the air enters,
+    // zero gradient where it leaves, so the side does not confine the flow
+    if (isA<inletOutletFvPatchVectorField>(Up))
+    {
+        refCast<inletOutletFvPatchVectorField>(Up).refValue() = value;
+        return;
+    }
+    if (!Up.fixesValue())
+    {
+        FatalErrorInFunction
+            << "Entry 'coupling.frame.inletPatches' names patch "
+            << Up.patch().name() << " of " << Up.internalField().name()
+            << ", whose type " << Up.type() << " cannot take the far"
+            << " field's velocity: use fixedValue (an inlet) or inletOutlet"
+            << " (a side)" << exit(FatalError);
+    }
+    Up == value;
+}
+
+
 void Foam::canopyCoupling::beginTimeStep(volVectorField& U)
 {
     frameVelocityStart_ = frameVelocity_;
@@ -698,7 +725,7 @@ void Foam::canopyCoupling::beginTimeStep(volVectorField& U)
         volVectorField::Boundary& Ub = U.boundaryFieldRef();
         for (const label patchi : inletPatches_)
         {
-            Ub[patchi] == wind_ - frameVelocity_;
+            setFarField(Ub[patchi], wind_ - frameVelocity_);
         }
         normalVelocity_ = interfaceNormalVelocities();
         triangleVelocity_ = interfaceVelocities();

@@ -1,0 +1,87 @@
+"""test_gci.py — known-answer tests of python/canopyfoam/gci.py (Roache's grid convergence index, Celik et al. 2008).
+
+Run as:  /usr/bin/python3 tests/python/test_gci.py   (./Alltest gci)
+Prints one PASS/FAIL line per check with the numbers; exits 1 if any fails.
+
+f(h) = f0 + C h^p sampled exactly at three sizes: the observed order is p
+and the extrapolation f0 to the fixed-point iteration's convergence
+(1e-12, well below the 1e-9 asked), for a constant ratio (2) and for the
+7 ft study's ratios (cells across D0 14, 21, 32: h ratios 1.5 and 1.524),
+where q(p) != 0 and a formula that ignores it misses p by ~0.1. The GCI
+is then Fs |f1 - f2|/|f1| / (r21^p - 1) with Fs = 1.25 (Celik eq. 7).
+Oscillatory and divergent triples fall back to Fs = 3 with the formal
+order; equal cell sizes are refused.
+"""
+
+import math
+import os
+import sys
+
+HERE = os.path.dirname(os.path.realpath(__file__))
+ROOT = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, os.path.join(ROOT, "python"))
+sys.path.insert(0, HERE)
+
+from canopyfoam import gci  # noqa: E402
+import test_report as shared  # noqa: E402
+
+
+def exact(h, f0=5.0, c=-3.0, p=1.7):
+    return [f0 + c * x ** p for x in h]
+
+
+def test_orders():
+    for label, h in (("ratio 2", (0.25, 0.5, 1.0)),
+                     ("cells 32/21/14 across D0",
+                      (2.134 / 32, 2.134 / 21, 2.134 / 14))):
+        out = gci.gci(h, exact(h))
+        shared.close("observed order, " + label, out["order"], 1.7, 1e-9)
+        shared.close("extrapolated value, " + label, out["extrapolated"],
+                     5.0, 1e-9)
+        f = exact(h)
+        want = 1.25 * abs((f[0] - f[1]) / f[0]) / ((h[1] / h[0]) ** 1.7 - 1)
+        shared.close("GCI of the finest, " + label, out["gci"], want, 1e-12)
+        shared.check("kind, " + label, out["kind"] == "monotone",
+                     out["kind"])
+    # Ignoring q(p) for the unequal ratios gives the wrong order
+    h = (2.134 / 32, 2.134 / 21, 2.134 / 14)
+    f = exact(h)
+    naive = math.log((f[2] - f[1]) / (f[1] - f[0])) / math.log(h[1] / h[0])
+    shared.check("the unequal ratios matter (naive order off by > 1e-3)",
+                 abs(naive - 1.7) > 1e-3, "naive order %.6f" % naive)
+
+
+def test_fallbacks():
+    h = (1.0, 1.5, 2.25)
+    osc = gci.gci(h, (4.0, 4.2, 3.9))
+    shared.check("oscillatory: no order, Fs 3 with the formal order",
+                 osc["kind"] == "oscillatory" and osc["order"] is None
+                 and osc["safety"] == 3.0 and osc["orderUsed"] == 2.0,
+                 "%s, order %s, Fs %s" % (osc["kind"], osc["order"],
+                                          osc["safety"]))
+    shared.close("oscillatory GCI", osc["gci"],
+                 3.0 * (0.2 / 4.0) / (1.5 ** 2 - 1), 1e-12)
+    div = gci.gci(h, (4.0, 4.1, 4.15))
+    shared.check("divergent: differences grow under refinement",
+                 div["kind"] == "divergent" and div["order"] is None,
+                 div["kind"])
+    try:
+        gci.gci((1.0, 1.0, 2.0), (1, 2, 3))
+        refused = False
+    except ValueError:
+        refused = True
+    shared.check("equal cell sizes are refused", refused, refused)
+
+
+def main():
+    test_orders()
+    test_fallbacks()
+    if shared.failures:
+        print("FAIL: %d check(s) failed: %s" % (len(shared.failures),
+                                               ", ".join(shared.failures)))
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
