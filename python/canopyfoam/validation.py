@@ -526,11 +526,110 @@ for _run in RUNS:
         _run.edits = SEVEN_EARLIER + _run.edits
         if "-cellSize" not in _run.options:
             _run.options = ["-cellSize", "0.2"] + _run.options
-# The 7 ft tutorial as it is: the main job's case
-RUNS.append(Run("7ft-default", SEVEN,
-                "the tutorial's default: full-load scheme, cell 0.15 m, "
-                "fabric edge 0.1875 m, to 16 s, written every 0.25 s",
+# Every run above was defined on the tutorials' narrow boxes (2.4-2.8 D0
+# wide, uniform cells, the sides imposing the far-field velocity), before
+# the tutorials moved to the wide box with nested refinement
+# (system/canopyMeshDict). Each of them starts from these edits, which
+# restore its tutorial's box: a uniform system/blockMeshDict with the
+# extents and cell counts "xMin xMax yMin yMax zMin zMax nx ny nz" (written
+# by prepare(), which also drops system/canopyMeshDict) and fixedValue
+# sides.
+NARROW_BOXES = {
+    SEVEN: "-3 3 -3 3 -4 5 40 40 60",
+    T10: "-15 15 -15 15 -17 25 30 30 42",
+    G11: "-14.25 14.25 -14.25 14.25 -19 22.8 30 30 44",
+    G11_FOLDED: "-14.25 14.25 -14.25 14.25 -19 22.8 30 30 44",
+    "parachutes/C9": "-12 12 -12 12 -16 19.2 30 30 44",
+    "parachutes/cross": "-1.8 1.8 -1.8 1.8 -2.4 3 30 30 45",
+    "parachutes/crossFolded": "-1.8 1.8 -1.8 1.8 -2.4 3 30 30 45",
+}
+NARROW_BOX_ENTRY = "narrowBox"
+
+
+def narrow_box(tutorial):
+    """The edits that restore a tutorial's earlier narrow box."""
+    return [("system/blockMeshDict", NARROW_BOX_ENTRY, NARROW_BOXES[tutorial]),
+            ("0.orig/U", "boundaryField/sides",
+             "{ type fixedValue; value uniform (0 0 0); }")]
+
+
+NARROW_BLOCK_MESH = """FoamFile
+{
+    version     2.0;
+    format      ascii;
+    class       dictionary;
+    object      blockMeshDict;
+}
+// The tutorial's earlier narrow box (python/canopyfoam/validation.py)
+xMin %s;  xMax %s;
+yMin %s;  yMax %s;
+zMin %s;  zMax %s;
+nx  %s;
+ny  %s;
+nz  %s;
+scale   1;
+vertices
+(
+    ($xMin $yMin $zMin) ($xMax $yMin $zMin) ($xMax $yMax $zMin) ($xMin $yMax $zMin)
+    ($xMin $yMin $zMax) ($xMax $yMin $zMax) ($xMax $yMax $zMax) ($xMin $yMax $zMax)
+);
+blocks
+(
+    hex (0 1 2 3 4 5 6 7) ($nx $ny $nz) simpleGrading (1 1 1)
+);
+boundary
+(
+    inlet   { type patch; faces ((0 3 2 1)); }
+    outlet  { type patch; faces ((4 5 6 7)); }
+    sides
+    {
+        type patch;
+        faces ((0 4 7 3) (1 2 6 5) (0 1 5 4) (3 7 6 2));
+    }
+);
+"""
+
+
+for _run in RUNS:
+    _run.edits = narrow_box(_run.tutorial) + _run.edits
+# The 7 ft tutorial's default on its narrow box: the main job's case until
+# the wide box
+RUNS.append(Run("7ft-narrow-default", SEVEN,
+                "the tutorial's default on its narrow box: full-load scheme, "
+                "cell 0.15 m, fabric edge 0.1875 m, to 16 s, written every "
+                "0.25 s",
+                edits=narrow_box(SEVEN)
+                + [(PROPS, "canopy/edgeLength", "0.1875"),
+                   (PROPS, "coupling/maxRelaxation", "0.3")],
                 reference="7ft"))
+
+# The tutorials as they are: the wide box (8 D0) with nested refinement
+# (system/canopyMeshDict), the sides inletOutlet
+MESH_DICT = "system/canopyMeshDict"
+
+
+def seven_wide(ident, label, options=(), edits=(), end_time=None):
+    """A run of the 7 ft tutorial as it is, with options and edits."""
+    edits = list(edits)
+    if end_time is not None:
+        edits.append(("system/controlDict", "endTime", "%g" % end_time))
+    return Run(ident, SEVEN, label, list(options), edits, reference="7ft")
+
+
+RUNS += [
+    seven_wide("7ft-default", "the tutorial's default: box 8 D0 wide, "
+               "14 cells across D0 at the canopy, to 12 s"),
+]
+# Domain: the box's width at the default resolution at the canopy
+DOMAIN_WIDTHS = (2.8, 5.6, 11)
+RUNS += [seven_wide("7ft-w%g" % w, "box %g D0 wide, 14 cells across D0" % w,
+                    edits=[(MESH_DICT, "domain/width", "%g" % w)])
+         for w in DOMAIN_WIDTHS]
+# Resolution at the canopy (every level and the fabric's edge follow)
+RESOLUTIONS = (9, 21, 32)
+RUNS += [seven_wide("7ft-cpd%d" % n, "box 8 D0 wide, %d cells across D0" % n,
+                    ["-cellsPerDiameter", "%d" % n])
+         for n in RESOLUTIONS]
 RUN_BY_ID = {r.ident: r for r in RUNS}
 
 
@@ -564,7 +663,11 @@ def earlier_seven(run):
 
 STUDIES = [
     ("default7ft", "7 ft canopy: the main job (the tutorial's default)",
-     ["7ft-default", "7ft-h0.15-fullLoad-16s"]),
+     ["7ft-default", "7ft-narrow-default", "7ft-h0.15-fullLoad-16s"]),
+    ("domain7ft", "7 ft canopy: the box's width (14 cells across D0 at the canopy)",
+     ["7ft-w2.8", "7ft-w5.6", "7ft-default", "7ft-w11"]),
+    ("resolution7ft", "7 ft canopy: cells across D0 at the canopy (box 8 D0 wide)",
+     ["7ft-cpd9", "7ft-default", "7ft-cpd21", "7ft-cpd32"]),
     ("mesh7ft", "7 ft canopy: mesh convergence",
      ["7ft-h0.30", "7ft-h0.20", "7ft-h0.15"]),
     ("duration7ft", "7 ft canopy: is 4 s long enough? (the default run to 8 s, with and without hinge dashpots)",
@@ -677,6 +780,13 @@ def prepare(run):
     shutil.copytree(src, run.case_dir, symlinks=True)
     for rel, entry, value in run.edits:
         path = os.path.join(run.case_dir, rel)
+        if entry == NARROW_BOX_ENTRY:
+            with open(path, "w") as f:
+                f.write(NARROW_BLOCK_MESH % tuple(value.split()))
+            mesh_dict = os.path.join(run.case_dir, "system", "canopyMeshDict")
+            if os.path.exists(mesh_dict):
+                os.remove(mesh_dict)
+            continue
         if value == "DOUBLE":
             value = "%.10g" % (2 * float(foam_get(path, entry)))
         out = subprocess.run(["foamDictionary", "-entry", entry, "-set",
@@ -757,8 +867,9 @@ def run_code_version(case_dir):
 
 def cell_count(case_dir):
     try:
-        with open(os.path.join(case_dir, "log.blockMesh")) as f:
-            m = re.search(r"nCells:\s*(\d+)", f.read())
+        with open(os.path.join(case_dir, "constant", "polyMesh", "owner"),
+                  "rb") as f:
+            m = re.search(rb"nCells:\s*(\d+)", f.read(2048))
         return int(m.group(1)) if m else None
     except OSError:
         return None
