@@ -288,6 +288,57 @@ static void violation(fuzz *f, const char *what, const char *detail)
     fflush(f->report);
 }
 
+/* All HDF5 identifiers in use (files, objects, dataspaces, property
+ * lists, error stacks): a call that does not create or destroy an output
+ * handle must leave their number as it was. */
+static long hdf5_ids(void)
+{
+    static const H5I_type_t types[] = {
+        H5I_FILE, H5I_GROUP, H5I_DATATYPE, H5I_DATASPACE, H5I_DATASET,
+        H5I_ATTR, H5I_GENPROP_LST, H5I_ERROR_STACK, H5I_ERROR_MSG,
+        H5I_ERROR_CLASS};
+    long total = 0;
+    H5E_BEGIN_TRY {
+        for (size_t i = 0; i < sizeof types / sizeof types[0]; ++i) {
+            hsize_t n = 0;
+            if (H5Inmembers(types[i], &n) >= 0) total += (long)n;
+        }
+    } H5E_END_TRY;
+    return total;
+}
+
+static long ids_before;
+
+/* Destroy the output handle: afterwards no HDF5 object may be open. */
+static void destroy_output(fuzz *f)
+{
+    if (f->out == NULL) return;
+    canopy_output_destroy(&f->out);
+    if (f->out != NULL) violation(f, "output_destroy left the handle", NULL);
+    const ssize_t open_ids = H5Fget_obj_count((hid_t)H5F_OBJ_ALL,
+                                              H5F_OBJ_ALL);
+    if (open_ids != 0) {
+        char text[64];
+        snprintf(text, sizeof text, "%zd still open", open_ids);
+        violation(f, "output_destroy left HDF5 objects open", text);
+    }
+}
+
+/* HDF5 identifiers the library left open: none, save the open output's
+ * file. */
+static void check_hdf5_ids(fuzz *f)
+{
+    const ssize_t open_ids = H5Fget_obj_count((hid_t)H5F_OBJ_ALL,
+                                              H5F_OBJ_ALL);
+    const ssize_t allowed = f->out ? 1 : 0;
+    if (open_ids > allowed) {
+        char text[64];
+        snprintf(text, sizeof text, "%zd open, %zd expected", open_ids,
+                 allowed);
+        violation(f, "HDF5 identifiers left open", text);
+    }
+}
+
 /* Anything the library wrote to fd 1 or 2 since the last check. */
 static void check_quiet(fuzz *f)
 {
@@ -481,12 +532,22 @@ static void before_call(fuzz *f, const char *action, int files)
     for (int i = 0; i < files; ++i) file_image_take(file_path[i],
                                                     &f->file_before[i]);
     check_quiet(f);
+    ids_before = hdf5_ids();
     ++f->c->calls;
 }
 
 static void after_call(fuzz *f, canopy_status st, int kind, int files)
 {
     check_quiet(f);
+    check_hdf5_ids(f);
+    const long ids_after = hdf5_ids();
+    if (ids_after != ids_before && (st != CANOPY_OK ||
+                                    strncmp(f->action, "output_create", 13))) {
+        char text[64];
+        snprintf(text, sizeof text, "%ld before, %ld after", ids_before,
+                 ids_after);
+        violation(f, "the call changed the number of HDF5 identifiers", text);
+    }
     if (st == CANOPY_OK) {
         if (kind == KIND_TOPOLOGY) f->ckpt_known = 0;
         if (kind == KIND_COMMIT) f->ckpt_known = 0;
@@ -1013,7 +1074,7 @@ static void act_files(fuzz *f)
     switch (rnd(f, 6)) {
     case 0: {
         /* Create: a fresh "good" file (or "other"); bad paths too. */
-        canopy_output_destroy(&f->out);
+        destroy_output(f);
         const int which = rnd(f, 8) ? rnd(f, 2) : 8;
         char path[400];
         if (which == 8) snprintf(path, sizeof path, "%s/no/such/dir/x", f->dir);
@@ -1030,7 +1091,7 @@ static void act_files(fuzz *f)
         break;
     }
     case 1: {
-        canopy_output_destroy(&f->out);
+        destroy_output(f);
         before_call(f, "output_create APPEND", 2);
         st = canopy_output_create(f->m, f->stem[k],
                                   rnd(f, 20) ? CANOPY_OUTPUT_APPEND
@@ -1043,6 +1104,11 @@ static void act_files(fuzz *f)
     case 2:
     case 3: {
         if (f->out == NULL) break;
+        if (canopy_output_step_count(f->out) >= 12) {
+            /* Keep the files (which the checks read) small. */
+            destroy_output(f);
+            break;
+        }
         ++f->c->calls;
         f->action = "output_write";
         /* Sentinel on the output handle: output_write with a NULL model. */
@@ -1055,8 +1121,13 @@ static void act_files(fuzz *f)
             file_image_take(file_path[i], &f->file_before[i]);
         const int steps = canopy_output_step_count(f->out);
         check_quiet(f);
+        const long ids0 = hdf5_ids();
         st = canopy_output_write(f->out, f->m);
         check_quiet(f);
+        check_hdf5_ids(f);
+        if (hdf5_ids() != ids0)
+            violation(f, "output_write changed the number of HDF5 "
+                      "identifiers", NULL);
         if (st != CANOPY_OK) {
             ++f->c->rejections;
             const char *msg = canopy_output_message(f->out);
@@ -1089,9 +1160,8 @@ static void act_files(fuzz *f)
     default:
         if (f->out) {
             ++f->c->calls;
-            canopy_output_destroy(&f->out);
-            if (f->out != NULL) violation(f, "output_destroy left the handle",
-                                          NULL);
+            f->action = "output_destroy";
+            destroy_output(f);
         }
         break;
     }
@@ -1144,7 +1214,7 @@ static void act_null(fuzz *f)
 /* A fresh model, sometimes empty, sometimes with a small canopy. */
 static void new_model(fuzz *f)
 {
-    canopy_output_destroy(&f->out);
+    destroy_output(f);
     canopy_model_destroy(&f->m);
     if (canopy_model_create(&f->m) != CANOPY_OK) {
         violation(f, "canopy_model_create failed", NULL);
@@ -1268,7 +1338,7 @@ int canopy_fuzz_run(unsigned long long seed, long calls, FILE *report,
             after_call(&f, canopy_model_checkpoint(f.m), KIND_CHECKPOINT, 0);
         }
     }
-    canopy_output_destroy(&f.out);
+    destroy_output(&f);
     canopy_model_destroy(&f.m);
     check_quiet(&f);
 #if defined(__SANITIZE_ADDRESS__)

@@ -5,6 +5,21 @@
 #include <stdlib.h>
 #include <string.h>
 
+#if defined(__SANITIZE_ADDRESS__)
+/* LeakSanitizer: HDF5 1.10.8 keeps internal structures it cannot free
+ * after failing to open an object of a damaged file (reproduced with HDF5
+ * alone: H5Fopen, a failing H5Gopen2, H5Fclose; at exit it prints
+ * "HDF5: infinite loop closing library"). The fuzzer's byte-flipped files
+ * trigger it. Allocations inside libhdf5 are therefore not reported; the
+ * fuzzer checks after every call that libcanopy left no HDF5 identifier
+ * open, which is how a leak of ours would show. */
+const char *__lsan_default_suppressions(void);
+const char *__lsan_default_suppressions(void)
+{
+    return "leak:libhdf5\n";
+}
+#endif
+
 static int usage(void)
 {
     fprintf(stderr, "usage: canopy-fuzz [--seed S] [--calls N]\n"
@@ -33,5 +48,6 @@ int main(int argc, char **argv)
     const int rc = canopy_fuzz_run(seed, calls, stderr, &c);
     printf("seed %llu: calls %ld, rejections %ld, violations %ld, crashes 0\n",
            seed, c.calls, c.rejections, c.violations);
+    fflush(stdout); /* before LeakSanitizer's report at exit */
     return rc;
 }
