@@ -464,3 +464,39 @@ CANOPY_TEST(robust_failed_create_keeps_old_files)
     canopy_model_destroy(&copy);
     canopy_model_destroy(&m);
 }
+
+CANOPY_TEST(robust_second_output_on_open_file)
+{
+    canopy_model *m = NULL;
+    ASSERT_OK(m, canopy_model_create(&m));
+    ASSERT_OK(m, membrane_fixture(m, 4, 0.1, 100.0, 0.0, 0.01));
+    char stem[] = "/tmp/canopy-robust-twice-XXXXXX";
+    const int fd = mkstemp(stem);
+    ASSERT_TRUE(fd >= 0);
+    close(fd);
+    char h5[64], xdmf[64];
+    snprintf(h5, sizeof h5, "%s.h5", stem);
+    snprintf(xdmf, sizeof xdmf, "%s.xdmf", stem);
+    canopy_output *o = NULL, *again = NULL;
+    ASSERT_OK(m, canopy_output_create(m, stem, CANOPY_OUTPUT_CREATE, &o));
+    ASSERT_OK(m, canopy_output_write(o, m));
+    /* A second handle on the open file would replace it under the first
+     * (CREATE) or write beside it (APPEND): refused, nothing changed. */
+    ASSERT_FRESH(m, CANOPY_ERR_IO,
+                 canopy_output_create(m, stem, CANOPY_OUTPUT_CREATE, &again),
+                 "open in another canopy_output");
+    ASSERT_FRESH(m, CANOPY_ERR_IO,
+                 canopy_output_create(m, stem, CANOPY_OUTPUT_APPEND, &again),
+                 "open in another canopy_output");
+    ASSERT_TRUE(again == NULL);
+    ASSERT_OK(m, canopy_output_write(o, m));
+    ASSERT_TRUE(canopy_output_step_count(o) == 2);
+    canopy_output_destroy(&o);
+    ASSERT_OK(m, canopy_output_create(m, stem, CANOPY_OUTPUT_APPEND, &again));
+    ASSERT_TRUE(canopy_output_step_count(again) == 2);
+    canopy_output_destroy(&again);
+    unlink(h5);
+    unlink(xdmf);
+    unlink(stem);
+    canopy_model_destroy(&m);
+}

@@ -611,6 +611,32 @@ static canopy_status open_for_append(canopy_output *o, const canopy_model *m,
     return CANOPY_OK;
 }
 
+/* Is path (an existing file) open in this process's HDF5 library, by
+ * another canopy_output? Compared by device and inode (a CREATE's file was
+ * opened under a temporary name). With the default sec2 driver the VFD
+ * handle is the POSIX descriptor. */
+static int open_in_hdf5(const char *path)
+{
+    struct stat want;
+    if (stat(path, &want) != 0) return 0;
+    const ssize_t n = H5Fget_obj_count((hid_t)H5F_OBJ_ALL, H5F_OBJ_FILE);
+    if (n <= 0) return 0;
+    hid_t *ids = malloc(sizeof *ids * (size_t)n);
+    if (ids == NULL) return 0;
+    const ssize_t got = H5Fget_obj_ids((hid_t)H5F_OBJ_ALL, H5F_OBJ_FILE,
+                                       (size_t)n, ids);
+    int found = 0;
+    for (ssize_t i = 0; i < got && !found; ++i) {
+        void *handle = NULL;
+        struct stat have;
+        if (H5Fget_vfd_handle(ids[i], H5P_DEFAULT, &handle) >= 0 &&
+            handle != NULL && fstat(*(int *)handle, &have) == 0)
+            found = have.st_dev == want.st_dev && have.st_ino == want.st_ino;
+    }
+    free(ids);
+    return found;
+}
+
 /* CREATE: the new file is written under a temporary name and renamed over
  * path.h5 only once its mesh is written and flushed, and the old sidecar
  * removed after that, so a failed create leaves both files as they were
@@ -672,6 +698,15 @@ static canopy_status create_impl(canopy_model *m, const char *path,
     o->h5_name = canopy_path_basename(o->h5_path);
 
     canopy_status st;
+    if (open_in_hdf5(o->h5_path)) {
+        st = out_fail(o, CANOPY_ERR_IO, "%s '%s' is open in another "
+                      "canopy_output (destroy that first)", "the HDF5 file");
+        const char *text = strchr(o->message, ':');
+        canopy_fail(m, st, "output_create: %s",
+                    text && text[1] ? text + 2 : o->message);
+        output_free(o);
+        return st;
+    }
     hid_t fapl = canopy_h5_fapl();
     if (fapl < 0) {
         st = out_fail(o, CANOPY_ERR_IO, "cannot make %s for '%s'",

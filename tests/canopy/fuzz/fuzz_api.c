@@ -1091,6 +1091,24 @@ static void act_files(fuzz *f)
         break;
     }
     case 1: {
+        if (f->out && rnd(f, 3) == 0) {
+            /* A second handle on the file the first one writes. */
+            path_of(f, f->out_stem, ".h5", file_path[0], sizeof file_path[0]);
+            path_of(f, f->out_stem, ".xdmf", file_path[1],
+                    sizeof file_path[1]);
+            canopy_output *second = NULL;
+            before_call(f, "output_create on an open file", 2);
+            st = canopy_output_create(f->m, f->stem[f->out_stem],
+                                      rnd(f, 2) ? CANOPY_OUTPUT_APPEND
+                                                : CANOPY_OUTPUT_CREATE,
+                                      &second);
+            if (st == CANOPY_OK) {
+                violation(f, "a second output on an open file", NULL);
+                canopy_output_destroy(&second);
+            }
+            after_call(f, st, KIND_QUERY, 2);
+            break;
+        }
         destroy_output(f);
         before_call(f, "output_create APPEND", 2);
         st = canopy_output_create(f->m, f->stem[k],
