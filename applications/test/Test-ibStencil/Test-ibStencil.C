@@ -30,7 +30,14 @@ Description
     - markers anywhere (down to the walls) plus one outside the mesh: the
       outside one flagged, without stencil, the others exact;
     - a stencil updated twice (moved markers) equals a new one; an update
-      with no markers works (collectively).
+      with no markers works (collectively);
+    - on a mesh with refinement levels (refineMesh: neighbouring cells with
+      volumes differing by more than a factor 1.5), markers at the centres
+      of faces between levels (on the interface: the point lies in cells of
+      both sizes), markers within one small cell of them, and one-sided
+      stencils across them: the same checks, and a marker moved onto or
+      off an interface gets the stencil a new one gets. Every check prints
+      how many stencils straddle an interface (hold cells of two levels).
 
     Unknown kernel names must be refused, by name and from a dictionary
     entry, with a message listing the valid kernels.
@@ -60,6 +67,10 @@ Usage
       - \par -tol \<value\>     relative tolerance (default 1e-10)
       - \par -output \<file\>   results file (default
             Test-ibStencil.np\<nProcs\>.dat in the case directory)
+      - \par -straddle \<f\>     require at least the fraction f of the
+            random two-sided and of the interface markers to have stencils
+            that straddle a refinement interface (a check that the mesh
+            tests what it is meant to)
       - \par -timing \<N\>      time the operations for N markers instead
       - \par -perturb          perturb the linear fields (must fail)
 
@@ -74,7 +85,12 @@ Usage
 #include "OFstream.H"
 #include "deltaKernel.H"
 #include "ibStencil.H"
+#include "syncTools.H"
+#include "processorPolyPatch.H"
+#include "ListListOps.H"
 
+#include <algorithm>
+#include <cmath>
 #include <chrono>
 
 using namespace Foam;
@@ -137,6 +153,197 @@ scalar fieldScale(const UList<Type>& f)
         s = max(s, mag(f[i]));
     }
     return returnReduce(s, maxOp<scalar>());
+}
+
+
+// Cells whose volumes differ by more than this factor lie on different
+// refinement levels (a 2:1 split: 8 in 3-D, 4 in 2-D; grading changes
+// neighbouring volumes by a few per cent)
+const scalar levelRatio = 1.5;
+
+
+// Per marker: the ratio of the largest to the smallest cell volume of its
+// stencil, over all ranks (0 for an empty stencil)
+scalarList stencilVolumeRatio(const ibStencil& st)
+{
+    const scalarField& V = st.mesh().cellVolumes();
+    scalarList vMin(st.size(), GREAT);
+    scalarList vMax(st.size(), Zero);
+    forAll(vMin, m)
+    {
+        for (const label celli : st.cells(m))
+        {
+            vMin[m] = min(vMin[m], V[celli]);
+            vMax[m] = max(vMax[m], V[celli]);
+        }
+    }
+    Pstream::listCombineGather(vMin, minEqOp<scalar>());
+    Pstream::listCombineScatter(vMin);
+    Pstream::listCombineGather(vMax, maxEqOp<scalar>());
+    Pstream::listCombineScatter(vMax);
+
+    scalarList ratio(st.size(), Zero);
+    forAll(ratio, m)
+    {
+        if (vMax[m] > 0)
+        {
+            ratio[m] = vMax[m]/vMin[m];
+        }
+    }
+    return ratio;
+}
+
+
+// The faces between cells on different refinement levels (volume ratio
+// above levelRatio), internal and processor faces (once, from the owner
+// side): their centres, unit normals (towards the smaller cell) and the
+// smaller cell's size
+// (cube root of its volume). The same list on every rank, in an order that
+// does not depend on the decomposition (lexicographic in the centres),
+// thinned to at most nMax faces (every k-th).
+void interfaceFaces
+(
+    const fvMesh& mesh,
+    const label nMax,
+    pointField& centres,
+    vectorField& normals,
+    scalarField& sizes
+)
+{
+    const scalarField& V = mesh.cellVolumes();
+    const labelUList& own = mesh.faceOwner();
+    const labelUList& nei = mesh.faceNeighbour();
+    const vectorField& Sf = mesh.faceAreas();
+    const pointField& Cf = mesh.faceCentres();
+
+    scalarField nbrV;
+    syncTools::swapBoundaryCellList(mesh, V, nbrV);
+
+    DynamicList<point> myC;
+    DynamicList<vector> myN;
+    DynamicList<scalar> myH;
+
+    // The normal points to the smaller cell (the owner side of a face
+    // depends on the decomposition)
+    const auto add = [&](const label facei, const scalar v0, const scalar v1)
+    {
+        if (max(v0, v1) > levelRatio*min(v0, v1))
+        {
+            myC.append(Cf[facei]);
+            myN.append((v1 < v0 ? 1 : -1)*Sf[facei]/mag(Sf[facei]));
+            myH.append(Foam::cbrt(min(v0, v1)));
+        }
+    };
+
+    forAll(nei, facei)
+    {
+        add(facei, V[own[facei]], V[nei[facei]]);
+    }
+    for (const polyPatch& pp : mesh.boundaryMesh())
+    {
+        const processorPolyPatch* procPtr =
+            isA<processorPolyPatch>(pp)
+          ? &refCast<const processorPolyPatch>(pp)
+          : nullptr;
+        if (procPtr && procPtr->owner())
+        {
+            forAll(pp, i)
+            {
+                const label facei = pp.start() + i;
+                add(facei, V[own[facei]], nbrV[facei - mesh.nInternalFaces()]);
+            }
+        }
+    }
+
+    // Every rank's faces on every rank
+    List<pointField> allC(Pstream::nProcs());
+    List<vectorField> allN(Pstream::nProcs());
+    List<scalarField> allH(Pstream::nProcs());
+    allC[Pstream::myProcNo()] = myC;
+    allN[Pstream::myProcNo()] = myN;
+    allH[Pstream::myProcNo()] = myH;
+    Pstream::gatherList(allC);
+    Pstream::scatterList(allC);
+    Pstream::gatherList(allN);
+    Pstream::scatterList(allN);
+    Pstream::gatherList(allH);
+    Pstream::scatterList(allH);
+
+    const pointField C(ListListOps::combine<pointField>
+    (
+        allC, accessOp<pointField>()
+    ));
+    const vectorField N(ListListOps::combine<vectorField>
+    (
+        allN, accessOp<vectorField>()
+    ));
+    const scalarField H(ListListOps::combine<scalarField>
+    (
+        allH, accessOp<scalarField>()
+    ));
+
+    // Lexicographic order of the centres rounded to 1e-9 of the box (the
+    // same face may differ in the last bits between decompositions)
+    const boundBox& bb = mesh.bounds();
+    const scalar quantum = 1e-9*cmptMax(bb.span());
+    List<FixedList<double, 3>> keys(C.size());
+    forAll(keys, i)
+    {
+        for (direction d = 0; d < 3; ++d)
+        {
+            keys[i][d] = std::round((C[i][d] - bb.min()[d])/quantum);
+        }
+    }
+    labelList order(identity(C.size()));
+    std::sort
+    (
+        order.begin(),
+        order.end(),
+        [&keys](const label i, const label j)
+        {
+            return std::lexicographical_compare
+            (
+                keys[i].begin(), keys[i].end(), keys[j].begin(), keys[j].end()
+            );
+        }
+    );
+
+    const label stride = max(label(1), (C.size() + nMax - 1)/max(nMax, 1));
+    const label n = (C.size() + stride - 1)/stride;
+    centres.setSize(n);
+    normals.setSize(n);
+    sizes.setSize(n);
+    for (label k = 0; k < n; ++k)
+    {
+        const label i = order[k*stride];
+        centres[k] = C[i];
+        normals[k] = N[i];
+        sizes[k] = H[i];
+    }
+}
+
+
+// Do two stencils hold the same cells, spacings and weights (all ranks)?
+scalar stencilDifference(const ibStencil& a, const ibStencil& b)
+{
+    scalar diff = 0;
+    if
+    (
+        a.offsets() != b.offsets()
+     || a.cells() != b.cells()
+     || a.spacing() != b.spacing()
+    )
+    {
+        diff = GREAT;
+    }
+    else
+    {
+        forAll(a.weights(), k)
+        {
+            diff = max(diff, mag(a.weights()[k] - b.weights()[k]));
+        }
+    }
+    return returnReduce(diff, maxOp<scalar>());
 }
 
 
@@ -318,7 +525,9 @@ struct testFields
 
 // Checks of one stencil; writes its per-marker results. Exactly
 // nInvalidExpected markers (the last ones) must be invalid; the checks use
-// the valid ones.
+// the valid ones. With minStraddle > 0, at least that fraction of the
+// valid markers must have stencils across a refinement interface (cells of
+// volume ratio above levelRatio).
 void checkStencil
 (
     const word& kernelName,
@@ -328,6 +537,7 @@ void checkStencil
     const label nInvalidExpected,
     const testFields& tf,
     const scalar tol,
+    const scalar minStraddle,
     Random& rnd,
     OFstream* osPtr
 )
@@ -387,6 +597,36 @@ void checkStencil
         << ", min rcond " << minRcond << ", " << nShared
         << " stencils on 2+ ranks)" << nl;
     check("stencil entries of markers that are not found", wrongFlags, 0);
+
+    // Stencils across refinement interfaces
+    {
+        const scalarList ratio(stencilVolumeRatio(st));
+        label nStraddle = 0;
+        label nValid = 0;
+        scalar maxRatio = 0;
+        forAll(ratio, m)
+        {
+            if (valid[m])
+            {
+                ++nValid;
+                nStraddle += (ratio[m] > levelRatio);
+                maxRatio = max(maxRatio, ratio[m]);
+            }
+        }
+        Info<< "    (" << nStraddle << " of " << nValid
+            << " stencils straddle a refinement interface, largest cell"
+            << " volume ratio in a stencil " << maxRatio << ")" << nl;
+        if (minStraddle > 0)
+        {
+            check
+            (
+                "1 - straddling fraction (1 - " + Foam::name(minStraddle)
+              + " at most)",
+                1 - scalar(nStraddle)/max(nValid, 1),
+                1 - minStraddle
+            );
+        }
+    }
     if (Pstream::parRun() && N - nInvalidExpected >= 100)
     {
         // Otherwise serial = parallel would prove little
@@ -534,6 +774,7 @@ void testKernel
     const label nMarkers,
     const label seed,
     const scalar tol,
+    const scalar minStraddle,
     const testFields& tf,
     OFstream* osPtr
 )
@@ -571,7 +812,10 @@ void testKernel
     ibStencil st(mesh, kernel);
     st.update(X);
     Info<< "  two-sided stencils, " << nMarkers << " markers" << nl;
-    checkStencil(kernelName, "centre", st, X, 0, tf, tol, rnd, osPtr);
+    checkStencil
+    (
+        kernelName, "centre", st, X, 0, tf, tol, minStraddle, rnd, osPtr
+    );
 
     // Re-using a stencil (previous cells as hints, kept work lists) must
     // give what a new one gives: move the markers by up to 0.4 cells
@@ -589,26 +833,13 @@ void testKernel
         reused.update(X);
         reused.update(Xm);
 
-        scalar diff = 0;
-        if
-        (
-            reused.offsets() != fresh.offsets()
-         || reused.cells() != fresh.cells()
-         || reused.spacing() != fresh.spacing()
-        )
-        {
-            diff = GREAT;
-        }
-        else
-        {
-            forAll(fresh.weights(), k)
-            {
-                diff = max(diff, mag(reused.weights()[k] - fresh.weights()[k]));
-            }
-        }
-        reduce(diff, maxOp<scalar>());
         Info<< "  re-used stencil, markers moved" << nl;
-        check("max |w_reused - w_new| (identical stencils)", diff, 0);
+        check
+        (
+            "max |w_reused - w_new| (identical stencils)",
+            stencilDifference(reused, fresh),
+            0
+        );
     }
 
     // One-sided stencils: at X + side*delta*n, delta = 1.5 cells along n
@@ -664,7 +895,7 @@ void testKernel
         (
             kernelName,
             side > 0 ? "plus" : "minus",
-            one, Xs, 0, tf, tol, rnd, osPtr
+            one, Xs, 0, tf, tol, -1, rnd, osPtr
         );
     }
 
@@ -706,7 +937,108 @@ void testKernel
         wall.update(Xw);
         Info<< "  two-sided stencils anywhere (near walls), "
             << Xw.size() - 1 << " markers + 1 outside" << nl;
-        checkStencil(kernelName, "anywhere", wall, Xw, 1, tf, tol, rnd, osPtr);
+        checkStencil
+        (
+            kernelName, "anywhere", wall, Xw, 1, tf, tol, -1, rnd, osPtr
+        );
+    }
+
+    // Markers on the refinement interfaces (faces between cells of
+    // different levels: a marker on a face lies in the cells of both
+    // sides), near them (within one small cell, every direction), and
+    // one-sided stencils across them; none on a mesh without refinement
+    pointField Xi;
+    vectorField ni;
+    scalarField hi;
+    interfaceFaces(mesh, nMarkers/4, Xi, ni, hi);
+    if (Xi.empty())
+    {
+        return;
+    }
+
+    pointField Xn(Xi);
+    forAll(Xn, m)
+    {
+        Xn[m] += hi[m]*(2*rnd.sample01<vector>() - vector::one);
+        for (direction d = 0; d < 3; ++d)
+        {
+            if (geomD[d] != 1)
+            {
+                Xn[m][d] = bb.centre()[d];
+            }
+        }
+    }
+
+    ibStencil on(mesh, kernel);
+    on.update(Xi);
+    Info<< "  two-sided stencils on refinement interfaces, " << Xi.size()
+        << " markers at the centres of faces between levels" << nl;
+    checkStencil
+    (
+        kernelName, "interfaceOn", on, Xi, 0, tf, tol, minStraddle, rnd, osPtr
+    );
+
+    ibStencil near(mesh, kernel);
+    near.update(Xn);
+    Info<< "  two-sided stencils near refinement interfaces, " << Xn.size()
+        << " markers within one small cell of a face between levels" << nl;
+    checkStencil
+    (
+        kernelName, "interfaceNear", near, Xn, 0, tf, tol, minStraddle, rnd,
+        osPtr
+    );
+
+    // A marker that comes to lie on an interface (or leaves it) must get
+    // the stencil a new one gets, whichever side it came from
+    {
+        ibStencil reused(mesh, kernel);
+        reused.update(Xn);
+        reused.update(Xi);
+        const scalar diffOn = stencilDifference(reused, on);
+        reused.update(Xn);
+        const scalar diffNear = stencilDifference(reused, near);
+        Info<< "  re-used stencil, markers moved onto and off the interfaces"
+            << nl;
+        check("max |w_reused - w_new|, moved onto an interface", diffOn, 0);
+        check("max |w_reused - w_new|, moved off an interface", diffNear, 0);
+    }
+
+    // One-sided stencils on either side of the interfaces
+    for (const label side : {1, -1})
+    {
+        scalarField delta(Xi.size());
+        forAll(delta, m)
+        {
+            delta[m] = 1.5*(cmptMag(ni[m]) & on.spacing()[m]);
+        }
+        const pointField Xs(Xi + side*delta*ni);
+
+        ibStencil one(mesh, kernel);
+        one.update(Xs, ni, Xi, side);
+
+        Info<< "  one-sided stencils across refinement interfaces, side "
+            << side << nl;
+        label wrong = 0;
+        const pointField& C = mesh.cellCentres();
+        forAll(Xs, m)
+        {
+            for (const label celli : one.cells(m))
+            {
+                if (side*((C[celli] - Xi[m]) & ni[m]) <= 0)
+                {
+                    ++wrong;
+                }
+            }
+        }
+        reduce(wrong, sumOp<label>());
+        check("stencil cells on the wrong side", wrong, 0);
+
+        checkStencil
+        (
+            kernelName,
+            side > 0 ? "interfacePlus" : "interfaceMinus",
+            one, Xs, 0, tf, tol, -1, rnd, osPtr
+        );
     }
 }
 
@@ -820,6 +1152,13 @@ int main(int argc, char *argv[])
     argList::addOption("output", "file", "Results file");
     argList::addOption
     (
+        "straddle",
+        "fraction",
+        "Require at least this fraction of the random and the interface"
+        " markers to have stencils across a refinement interface"
+    );
+    argList::addOption
+    (
         "timing", "N", "Time the operations for N markers (no checks)"
     );
     argList::addBoolOption
@@ -855,6 +1194,7 @@ int main(int argc, char *argv[])
     const label nMarkers = args.getOrDefault<label>("markers", 1000);
     const label seed = args.getOrDefault<label>("seed", 1912);
     const scalar tol = args.getOrDefault<scalar>("tol", 1e-10);
+    const scalar minStraddle = args.getOrDefault<scalar>("straddle", -1);
 
     wordList kernels;
     if (args.found("kernel"))
@@ -895,7 +1235,7 @@ int main(int argc, char *argv[])
     {
         testKernel
         (
-            mesh, kernelName, nMarkers, seed, tol, tf,
+            mesh, kernelName, nMarkers, seed, tol, minStraddle, tf,
             osPtr.valid() ? osPtr.get() : nullptr
         );
     }

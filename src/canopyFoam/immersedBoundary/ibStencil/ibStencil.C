@@ -26,6 +26,14 @@ namespace
 typedef Foam::indexedOctree<Foam::treeDataCell> cellTreeType;
 typedef Foam::indexedOctree<Foam::treeDataPoint> pointTreeType;
 
+// Cells whose kernel product is at most this are left out. Near the edge of
+// the support phi falls as the square of the distance to it, so a cell
+// centre on that edge to round-off (markers on mesh faces, cells of a
+// regular grid) has phi ~ 1e-33 or 0 depending on the last bits of the
+// centre, which differ between decompositions; its weight is immaterial
+// either way, its presence in the stencil would not be
+const Foam::scalar phiMin = 1e-12;
+
 // mesh.pointInCell(p, celli) (tet decomposition), after the cheap test
 // that p lies in the bounding box of the cell's points (a cell lies in its
 // box: the same answer, without the tets for the cells p is not near)
@@ -53,6 +61,51 @@ bool pointInCellFast
         }
     }
     return mesh.pointInCell(p, celli);
+}
+
+// Does p lie within tol of cell celli: in its bounding box grown by tol,
+// and at most tol outside the plane of each of its faces? For a convex cell
+// this is the cell grown by tol; it accepts a point on a face, edge or
+// corner whichever side's rounding says otherwise (mesh.pointInCell of a
+// point on a face can be true for one of its cells and false for the other)
+bool pointNearCell
+(
+    const Foam::polyMesh& mesh,
+    const Foam::point& p,
+    const Foam::label celli,
+    const Foam::scalar tol
+)
+{
+    const Foam::pointField& pts = mesh.points();
+    const Foam::labelList& cellPts = mesh.cellPoints()[celli];
+    Foam::point lo(pts[cellPts[0]]);
+    Foam::point hi(lo);
+    for (const Foam::label pointi : cellPts)
+    {
+        lo = Foam::min(lo, pts[pointi]);
+        hi = Foam::max(hi, pts[pointi]);
+    }
+    for (Foam::direction d = 0; d < Foam::vector::nComponents; ++d)
+    {
+        if (p[d] < lo[d] - tol || p[d] > hi[d] + tol)
+        {
+            return false;
+        }
+    }
+
+    const Foam::vectorField& Sf = mesh.faceAreas();
+    const Foam::pointField& Cf = mesh.faceCentres();
+    const Foam::labelUList& own = mesh.faceOwner();
+    for (const Foam::label facei : mesh.cells()[celli])
+    {
+        // Outward from celli
+        const Foam::scalar s = ((p - Cf[facei]) & Sf[facei])/mag(Sf[facei]);
+        if ((own[facei] == celli ? s : -s) > tol)
+        {
+            return false;
+        }
+    }
+    return true;
 }
 
 // Append to cells, once each, the shapes (cell centres) of the point tree
@@ -152,6 +205,61 @@ Foam::vector Foam::ibStencil::cellSpan(const label celli) const
 }
 
 
+Foam::vector Foam::ibStencil::containingSpan
+(
+    const point& p,
+    const label celli
+) const
+{
+    // p lies in celli; any other cell holding p shares a point with it.
+    // Within 1e-9 of the cell size counts as in: a point on a face is in
+    // both of its cells, whichever the search found
+    vector span(cellSpan(celli));
+    const scalar tol = 1e-9*cmptMax(span);
+
+    // More than tol inside the plane of every face (the cell's kernel, a
+    // part of the cell): in no other cell. Most markers; saves the search
+    {
+        const vectorField& Sf = mesh_.faceAreas();
+        const pointField& Cf = mesh_.faceCentres();
+        const labelUList& own = mesh_.faceOwner();
+        bool interior = true;
+        for (const label facei : mesh_.cells()[celli])
+        {
+            const scalar s = ((p - Cf[facei]) & Sf[facei])/mag(Sf[facei]);
+            if ((own[facei] == celli ? s : -s) >= -tol)
+            {
+                interior = false;
+                break;
+            }
+        }
+        if (interior)
+        {
+            return span;
+        }
+    }
+
+    for (const label pointi : mesh_.cellPoints()[celli])
+    {
+        for (const label nbr : mesh_.pointCells()[pointi])
+        {
+            if
+            (
+                nbr != celli
+             && (
+                    pointNearCell(mesh_, p, nbr, tol)
+                 || pointInCellFast(mesh_, p, nbr)
+                )
+            )
+            {
+                span = min(span, cellSpan(nbr));
+            }
+        }
+    }
+    return span;
+}
+
+
 const Foam::indexedOctree<Foam::treeDataPoint>&
 Foam::ibStencil::centreTree()
 {
@@ -204,9 +312,6 @@ void Foam::ibStencil::checkMarkerCount(const label n) const
 
 void Foam::ibStencil::calcSpacing(const pointField& points)
 {
-    const label nProcs = Pstream::nProcs();
-    const label myProc = Pstream::myProcNo();
-
     // Keep the previous cells as hints when the number of markers is the
     // same (every one is checked)
     if (markerCell_.size() != nMarkers_)
@@ -214,7 +319,11 @@ void Foam::ibStencil::calcSpacing(const pointField& points)
         markerCell_.setSize(nMarkers_);
         markerCell_ = -1;
     }
-    owner_.setSize(nMarkers_);
+
+    // Per marker, the smallest extents of the local cells containing it
+    // (GREAT: none)
+    spacing_.setSize(nMarkers_);
+    spacing_ = vector::uniform(GREAT);
 
     if (mesh_.nCells())
     {
@@ -255,35 +364,34 @@ void Foam::ibStencil::calcSpacing(const pointField& points)
                 celli = (shapei < 0 ? -1 : shapeCells[shapei]);
             }
             markerCell_[m] = celli;
-            owner_[m] = (celli < 0 ? nProcs : myProc);
+
+            // Which of the cells holding a point on a face (edge, corner)
+            // the search returns depends on the hint and the tree: take
+            // the smallest extents of them all
+            if (celli >= 0)
+            {
+                spacing_[m] = containingSpan(points[m], celli);
+            }
         }
     }
     else
     {
         markerCell_ = -1;
-        owner_ = nProcs;
     }
 
-    // The lowest rank holding a containing cell owns the marker
-    Pstream::listCombineGather(owner_, minEqOp<label>());
-    Pstream::listCombineScatter(owner_);
-
-    // Its cell gives the spacing, shared with every rank
-    spacing_.setSize(nMarkers_);
-    forAll(spacing_, m)
-    {
-        spacing_[m] =
-        (
-            owner_[m] == myProc ? cellSpan(markerCell_[m]) : vector::zero
-        );
-    }
-    Pstream::listCombineGather(spacing_, plusEqOp<vector>());
+    // The smallest extents over the ranks (min is per component), the same
+    // on every rank and as in serial
+    Pstream::listCombineGather(spacing_, minEqOp<vector>());
     Pstream::listCombineScatter(spacing_);
 
     found_.setSize(nMarkers_);
     forAll(found_, m)
     {
-        found_[m] = (owner_[m] < nProcs);
+        found_[m] = (spacing_[m].x() < GREAT);
+        if (!found_[m])
+        {
+            spacing_[m] = Zero;
+        }
     }
 }
 
@@ -528,7 +636,8 @@ void Foam::ibStencil::calcStencils
                         }
                     }
 
-                    if (b == 0)
+                    // Negligible at the edge of the support (see phiMin)
+                    if (b <= phiMin*V[celli])
                     {
                         continue;
                     }
@@ -665,7 +774,6 @@ Foam::ibStencil::ibStencil
     stencilCells_(),
     entrySlot_(),
     markerCell_(),
-    owner_(),
     moments_(),
     marked_(),
     candidates_(),
