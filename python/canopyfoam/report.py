@@ -10,6 +10,8 @@ time step, whitespace separated, comment lines starting with '#':
   8-10 pressure force on the         17 coupling residual
        canopy [N]                    18 slip
                                      19 structure sub-steps
+ 20-22 the mesh frame's origin [m]   23-25 the lines' drag [N]
+ 26-28 the canopy's area-weighted centre [m] (ground frame)
 
 and header lines "# nominalDiameter 2.134", "# totalMass 6.02" (canopy +
 lines + payload, kg), "# rho 1.2", "# gravity 0 0 -9.81" when it knows them.
@@ -56,7 +58,10 @@ COLUMNS = (
     "coupling_iterations", "residual", "slip", "substeps",
 )
 NCOLUMNS = len(COLUMNS)
-COL = {name: i for i, name in enumerate(COLUMNS)}
+# Columns later solvers add, read by name when the column-name line has
+# them (NaN where a file lacks them): the canopy's area-weighted centre
+OPTIONAL_COLUMNS = ("canopy_x", "canopy_y", "canopy_z")
+COL = {name: i for i, name in enumerate(COLUMNS + OPTIONAL_COLUMNS)}
 
 # Header key -> (command-line option, what it is, unit, number of values)
 QUANTITIES = {
@@ -192,10 +197,19 @@ def read_dat(path):
             raise ReportError("%s: no column %s in its column-name line"
                               % (path, ", ".join(missing)))
         order = [names.index(c) for c in COLUMNS]
+        optional = [names.index(c) if c in names else None
+                    for c in OPTIONAL_COLUMNS]
     else:
         order = list(range(NCOLUMNS))
-    array = (np.array(rows, dtype=float)[:, order] if rows
-             else np.zeros((0, NCOLUMNS)))
+        optional = [None] * len(OPTIONAL_COLUMNS)
+    width = NCOLUMNS + len(OPTIONAL_COLUMNS)
+    array = np.full((len(rows), width), np.nan)
+    if rows:
+        raw = np.array(rows, dtype=float)
+        array[:, :NCOLUMNS] = raw[:, order]
+        for k, i in enumerate(optional):
+            if i is not None:
+                array[:, NCOLUMNS + k] = raw[:, i]
     return header, array, skipped
 
 
@@ -263,7 +277,7 @@ def concatenate(pieces):
     header = {}
     conflicts = set()
     files = []
-    kept = np.zeros((0, NCOLUMNS))
+    kept = np.zeros((0, NCOLUMNS + len(OPTIONAL_COLUMNS)))
     source = np.zeros(0, dtype=int)
     overridden = 0
     for index, (start, path) in enumerate(pieces):
@@ -432,6 +446,41 @@ def time_statistics(t, y):
             "max": float(np.max(y)), "drift": slope * float(t[-1] - t[0])}
 
 
+def mean_confidence(t, y, level_z=1.96):
+    """The time mean's 95 % confidence half-width from the series' own
+    autocorrelation (a correlated series has fewer independent samples
+    than points): y resampled on a uniform grid at the median step,
+    rho(k) its autocorrelation, the integral time scale
+        T_i = dt (1/2 + sum_{k=1}^{K-1} rho(k)),
+    K the first lag where rho <= 0, the effective sample count
+    N_eff = T / (2 T_i) over the interval's length T, and the half-width
+    level_z sigma / sqrt(N_eff). Returns (half-width, T_i, N_eff), with a
+    None half-width when N_eff < 2 (the interval is shorter than two
+    integral time scales: no estimate)."""
+    t = np.asarray(t, dtype=float)
+    y = np.asarray(y, dtype=float)
+    if len(t) < 4 or t[-1] <= t[0]:
+        return None, None, None
+    dt = float(np.median(np.diff(t)))
+    n = int(round((t[-1] - t[0]) / dt)) + 1
+    grid = np.linspace(t[0], t[-1], n)
+    u = np.interp(grid, t, y)
+    u = u - u.mean()
+    var = float(np.mean(u * u))
+    if var == 0.0:
+        return 0.0, 0.0, float("inf")
+    f = np.fft.rfft(u, 2 * n)
+    acf = np.fft.irfft(f * np.conj(f))[:n] / (var * n)
+    below = np.nonzero(acf[1:] <= 0.0)[0]
+    last = int(below[0]) + 1 if below.size else n
+    t_int = dt * (0.5 + float(np.sum(acf[1:last])))
+    length = float(grid[-1] - grid[0]) + dt
+    n_eff = length / (2.0 * t_int)
+    if n_eff < 2.0:
+        return None, t_int, n_eff
+    return level_z * math.sqrt(var) / math.sqrt(n_eff), t_int, n_eff
+
+
 def spectrum(t, y):
     """One-sided amplitude spectrum of y(t), detrended and Hann-windowed.
 
@@ -501,6 +550,37 @@ def breathing(t, diameter):
     return result
 
 
+def suspension_swing(t, offset, ghat):
+    """The suspension's angle to the vertical over the interval, from the
+    canopy's centre's offset from the payload (n x 3, ground frame):
+    theta = atan(|offset across gravity| / offset against gravity).
+    Returns None when the offsets are not in the data (an older solver's
+    canopy.dat), else a dict: angleMax and angleRms [degrees], and the
+    swing's frequency, period and amplitude [m] from the spectrum of the
+    offset's component across gravity along which it varies most (the
+    breathing analysis's peak finder; frequency None when not resolved)."""
+    offset = np.asarray(offset, dtype=float)
+    if len(t) < 2 or not np.all(np.isfinite(offset)):
+        return None
+    up = -np.asarray(ghat, dtype=float)
+    along = offset @ up
+    across = offset - np.outer(along, up)
+    theta = np.degrees(np.arctan2(np.linalg.norm(across, axis=1), along))
+    w = trapezoid_weights(t)
+    # the direction across gravity in which the offset varies most
+    dev = across - np.sum(w[:, None] * across, axis=0) / np.sum(w)
+    _, _, vt = np.linalg.svd(dev * np.sqrt(w)[:, None], full_matrices=False)
+    peak = breathing(t, dev @ vt[0])
+    return {"angleMax": float(np.max(theta)),
+            "angleRms": float(math.sqrt(np.sum(w * theta ** 2)
+                                        / np.sum(w))),
+            "frequency": peak["frequency"],
+            "period": (1.0 / peak["frequency"] if peak["frequency"]
+                       else None),
+            "amplitude": peak["amplitude"],
+            "note": peak["note"]}
+
+
 def drag_coefficients(speed, drag_force, mass, gravity, rho, diameter):
     """C_D = W / (q S0) and C_D = drag / (q S0), q = rho V^2 / 2."""
     g = float(np.linalg.norm(gravity))
@@ -546,10 +626,15 @@ def analyse(case_dir, fraction=None, steady_start=None, diameter=None,
     m = interval_mask(t, t0, t1)
     ts = t[m]
     v_stats = time_statistics(ts, V[m])
+    ci, t_int, n_eff = mean_confidence(ts, V[m])
+    v_stats.update(ci95=ci, integralTime=t_int, effectiveSamples=n_eff)
     h_stats = time_statistics(ts, H[m])
     d_stats = time_statistics(ts, D[m])
     f_stats = time_statistics(ts, drag[m])
     b = breathing(ts, D[m])
+    swing = suspension_swing(ts, series.columns(
+        "canopy_x", "canopy_y", "canopy_z")[m] - series.columns(
+        "payload_x", "payload_y", "payload_z")[m], ghat)
     cd = drag_coefficients(v_stats["mean"], f_stats["mean"],
                            params["totalMass"][0], g,
                            params["rho"][0], D0)
@@ -584,6 +669,7 @@ def analyse(case_dir, fraction=None, steady_start=None, diameter=None,
         "projectedDiameter": d_stats,
         "pressureForceAgainstGravity": f_stats,
         "breathing": {k: v for k, v in b.items() if not k.startswith("_")},
+        "swing": swing,
         "dragCoefficient": cd,
         "coupling": {
             "meanIterations": float(np.mean(iterations)),
@@ -691,12 +777,27 @@ def format_summary(r):
             "(V = v.g/|g|, time-weighted)"
             % (v["mean"], v["std"], v["min"], v["max"]))
     add(line)
+    if v.get("ci95") is not None:
+        add("  mean's 95 %% interval  +- %.2g m/s (integral time %.3g s, %.0f "
+            "independent samples)" % (v["ci95"], v["integralTime"],
+                                     v["effectiveSamples"]))
+    elif "ci95" in v:
+        add("  mean's 95 % interval  none: the interval is shorter than two "
+            "integral times of the series")
     if ref and _reference_descent(ref, v["mean"]):
         add("     ref %-5s %s" % (ref["name"],
                                   _reference_descent(ref, v["mean"])))
     h = r["horizontalVelocity"]
     add("  horizontal   %.3g m/s  max %.3g  (the payload's speed across "
         "gravity: a swing or glide)" % (h["mean"], h["max"]))
+    sw = r.get("swing")
+    if sw:
+        add("  swing        suspension at %.3g deg to the vertical at most "
+            "(rms %.3g)%s" % (
+                sw["angleMax"], sw["angleRms"],
+                "; period %.3g s, amplitude %.3g m" % (
+                    sw["period"], sw["amplitude"]) if sw["period"]
+                else "; no period resolved"))
     add("  diameter     %.4g m = %.3f D0  std %.3g  min %.4g  max %.4g"
         % (d["mean"], d["mean"] / D0, d["std"], d["min"], d["max"]))
     if b["resolved"]:

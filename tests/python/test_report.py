@@ -461,6 +461,84 @@ def run_checks(tmp, body, what):
     return 0
 
 
+def test_mean_confidence(tmp):
+    """The mean's 95 % interval from the series' autocorrelation, on 400
+    independent AR(1) series y_k = phi y_{k-1} + e_k (phi 0.9, 4000
+    steps of 0.01 s, seeded): the true mean 0 must lie inside the
+    interval of about 95 % of them. With phi 0.9 the integral time is
+    ~0.095 s, so the raw std over sqrt(N) would be ~4 times too narrow
+    and cover only ~40 %. The binomial spread of the count over 400 is
+    1.1 %; the tolerance [0.90, 0.99] also holds the estimator's bias
+    (the autocorrelation summed to its first zero)."""
+    import numpy as np
+    rng = np.random.default_rng(20261124)
+    phi, n, dt, trials = 0.9, 4000, 0.01, 400
+    t = dt * np.arange(n)
+    inside = naive_inside = 0
+    t_ints = []
+    for _ in range(trials):
+        e = rng.standard_normal(n)
+        y = np.empty(n)
+        y[0] = e[0] / math.sqrt(1 - phi * phi)
+        for k in range(1, n):
+            y[k] = phi * y[k - 1] + e[k]
+        ci, t_int, _ = report.mean_confidence(t, y)
+        inside += abs(y.mean()) <= ci
+        naive_inside += abs(y.mean()) <= 1.96 * y.std() / math.sqrt(n)
+        t_ints.append(t_int)
+    coverage = inside / trials
+    check("the 95 % interval holds the true mean of ~95 % of AR(1) series",
+          0.90 <= coverage <= 0.99,
+          "%.3f of %d (the raw std's interval: %.3f)"
+          % (coverage, trials, naive_inside / trials))
+    want = dt * (0.5 + phi / (1 - phi))
+    close("integral time of the AR(1) series (mean over the trials)",
+          float(np.mean(t_ints)), want, 0.15 * want, "s")
+    # A drift (a ramp: the descent still speeding up) is one long
+    # correlated excursion: ~3 independent samples, an interval as wide
+    # as the spread itself (the raw std over sqrt(N) would be 15 times
+    # narrower over these 200 points)
+    ramp = t[:200]
+    ci, _, n_eff = report.mean_confidence(ramp, ramp)
+    check("a drift's interval is as wide as its spread",
+          n_eff < 4 and ci >= 0.9 * ramp.std(),
+          "half-width %.3g, std %.3g, %.2g independent samples"
+          % (ci, ramp.std(), n_eff))
+
+
+def test_swing(tmp):
+    """The suspension's swing from the canopy's centre and the payload:
+    theta(t) = 10 deg sin(2 pi 0.25 t) in the x-z plane, lines of 2.5 m,
+    12 s at 0.01 s, gravity -z. Expected: largest angle 10 deg (the
+    samples hit the crest to 1e-4), rms 10/sqrt(2) deg (whole periods:
+    exact to 1e-3), period 4 s and the x offset's fundamental
+    2 L J1(theta0) = 0.4347 m (J1 the Bessel function) from the detrended,
+    Hann-windowed spectrum of 12.01 s: the tone sits 0.1 % off its bin and
+    its third harmonic leaks into it, which the single-tone refinement and
+    the on-bin amplitude do not undo (measured: 0.34 % in period, 0.8 % in
+    amplitude), so 0.5 % and 1.5 %; a wrong bin is off by 8 %. An older
+    canopy.dat without the centre gives no swing."""
+    import numpy as np
+    t = np.arange(0, 12.0 + 1e-9, 0.01)
+    theta0, length = math.radians(10.0), 2.5
+    theta = theta0 * np.sin(2 * math.pi * 0.25 * t)
+    offset = np.stack([length * np.sin(theta), 0 * t,
+                       length * np.cos(theta)], axis=1)
+    sw = report.suspension_swing(t, offset, np.array([0.0, 0.0, -1.0]))
+    close("swing: largest angle", sw["angleMax"], 10.0, 1e-4, "deg")
+    close("swing: rms angle", sw["angleRms"], 10.0 / math.sqrt(2), 1e-3,
+          "deg")
+    close("swing: period", sw["period"], 4.0, 0.02, "s")
+    j1 = sum((-1) ** k * (theta0 / 2) ** (2 * k + 1)
+             / (math.factorial(k) * math.factorial(k + 1)) for k in range(8))
+    close("swing: amplitude of the offset's fundamental", sw["amplitude"],
+          2 * length * j1, 0.015 * 2 * length * j1, "m")
+    nan = np.full_like(offset, np.nan)
+    check("no swing without the canopy's centre",
+          report.suspension_swing(t, nan, np.array([0.0, 0.0, -1.0]))
+          is None, "None")
+
+
 def main():
     tmp = tempfile.mkdtemp(prefix="canopy-report-")
 
@@ -471,6 +549,8 @@ def main():
         test_missing_quantities(tmp)
         test_command_line(tmp, case, r)
         test_references(tmp, case)
+        test_mean_confidence(tmp)
+        test_swing(tmp)
     return run_checks(tmp, body, "report")
 
 

@@ -74,6 +74,7 @@ Foam::string Foam::canopyCoupling::updateStencils()
     }
     plusStencil_->update(mk.points() + delta*n, n, mk.points(), 1);
     minusStencil_->update(mk.points() - delta*n, n, mk.points(), -1);
+    reportCoarseMarkers(h);
 
     // Every marker must have a stencil: a canopy leaving the mesh stops here
     const boolList* flags[3] =
@@ -98,6 +99,37 @@ Foam::string Foam::canopyCoupling::updateStencils()
         }
     }
     return string();
+}
+
+
+void Foam::canopyCoupling::reportCoarseMarkers(const vectorField& h)
+{
+    // A marker in a cell more than 1.5 times the finest marker's cell lies
+    // past the finest refinement level around the canopy (a nested mesh,
+    // bin/canopy-mesh); said when the count changes (the same on every
+    // rank: h is)
+    scalar finest = GREAT;
+    forAll(h, m)
+    {
+        if (cmptMax(h[m]) > 0)
+        {
+            finest = min(finest, cmptMax(h[m]));
+        }
+    }
+    label coarse = 0;
+    forAll(h, m)
+    {
+        coarse += (cmptMax(h[m]) > 1.5*finest);
+    }
+    if (coarse != coarseMarkers_)
+    {
+        Info<< "canopyCoupling: t = " << mesh_.time().timeName() << ": "
+            << coarse << " of " << h.size() << " markers lie in cells"
+            << " coarser than the finest at the canopy (" << finest
+            << " m)" << (coarse ? ": the canopy reaches past the finest"
+               " refinement level" : "") << endl;
+        coarseMarkers_ = coarse;
+    }
 }
 
 
@@ -383,7 +415,8 @@ void Foam::canopyCoupling::writeSeries()
             << " payload_Uz force_x force_y force_z projected_diameter"
             << " canopy_area kinetic spring gravity coupling_iterations"
             << " residual slip substeps frame_x frame_y frame_z"
-            << " line_drag_x line_drag_y line_drag_z" << nl;
+            << " line_drag_x line_drag_y line_drag_z"
+            << " canopy_x canopy_y canopy_z" << nl;
     }
     const point x
     (
@@ -400,6 +433,13 @@ void Foam::canopyCoupling::writeSeries()
     (
         lineDrag_.valid() ? lineDrag_->total() : vector::zero
     );
+    // The canopy's area-weighted centre (ground frame): with the payload,
+    // the suspension's direction
+    const scalarField areas(structure_.triangleAreas());
+    const point centre
+    (
+        sum(areas*structure_.triangleCentres())/max(sum(areas), VSMALL)
+    );
     series_()
         << runTime.value() << ' ' << x.x() << ' ' << x.y() << ' ' << x.z()
         << ' ' << v.x() << ' ' << v.y() << ' ' << v.z()
@@ -410,7 +450,8 @@ void Foam::canopyCoupling::writeSeries()
         << ' ' << subSteps_ << ' ' << frameOrigin_.x() << ' '
         << frameOrigin_.y() << ' ' << frameOrigin_.z()
         << ' ' << lineDragForce.x() << ' ' << lineDragForce.y() << ' '
-        << lineDragForce.z() << endl;
+        << lineDragForce.z() << ' ' << centre.x() << ' ' << centre.y()
+        << ' ' << centre.z() << endl;
 }
 
 
@@ -467,6 +508,7 @@ Foam::canopyCoupling::canopyCoupling
     nominalDiameter_(0),
     followPayload_(false),
     wind_(Zero),
+    coarseMarkers_(0),
     inletPatches_(),
     frameOrigin_(Zero),
     frameOriginTime_(0),
