@@ -583,7 +583,11 @@ typedef enum canopy_output_mode {
                                  steps later than the model's time are dropped */
 } canopy_output_mode;
 
-/* Errors of create are reported on the model's message. */
+/* Errors of create are reported on the model's message. A failed create
+ * leaves path.h5 and path.xdmf as they were (CREATE writes the new file
+ * under a temporary name and renames it when complete; APPEND reads the
+ * file before it opens it for writing). A path whose .h5 another
+ * canopy_output has open is refused (CANOPY_ERR_IO). */
 canopy_status canopy_output_create(canopy_model *model, const char *path,
                                    canopy_output_mode mode,
                                    canopy_output **out);
