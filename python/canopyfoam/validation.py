@@ -628,15 +628,15 @@ def seven_wide(ident, label, options=(), edits=(), end_time=None):
 
 RUNS += [
     seven_wide("7ft-default", "the tutorial's default: box 8 D0 wide, "
-               "14 cells across D0 at the canopy, to 12 s"),
+               "12 cells across D0 at the canopy, to 12 s"),
 ]
 # Domain: the box's width at the default resolution at the canopy
 DOMAIN_WIDTHS = (2.8, 5.6, 11)
-RUNS += [seven_wide("7ft-w%g" % w, "box %g D0 wide, 14 cells across D0" % w,
+RUNS += [seven_wide("7ft-w%g" % w, "box %g D0 wide, 12 cells across D0" % w,
                     edits=[(MESH_DICT, "domain/width", "%g" % w)])
          for w in DOMAIN_WIDTHS]
 # Resolution at the canopy (every level and the fabric's edge follow)
-RESOLUTIONS = (9, 21, 32)
+RESOLUTIONS = (18, 27, 40)
 RUNS += [seven_wide("7ft-cpd%d" % n, "box 8 D0 wide, %d cells across D0" % n,
                     ["-cellsPerDiameter", "%d" % n])
          for n in RESOLUTIONS]
@@ -695,13 +695,13 @@ STUDIES = [
     ("default7ft", "7 ft canopy: the main job (the tutorial's default)",
      ["7ft-default", "7ft-narrow-balanced", "7ft-narrow-default",
       "7ft-h0.15-fullLoad-16s"]),
-    ("domain7ft", "7 ft canopy: the box's width (14 cells across D0 at the canopy)",
+    ("domain7ft", "7 ft canopy: the box's width (12 cells across D0 at the canopy)",
      ["7ft-w2.8", "7ft-w5.6", "7ft-default", "7ft-w11"]),
     ("tutorialsWide", "The other tutorials on the wide box (8 D0, nested refinement, 11 cells across D0)",
      ["T10-default", "T10-m163-default", "G11-default", "G11-folded-default",
       "C9-default", "cross-default", "cross-folded-default"]),
     ("resolution7ft", "7 ft canopy: cells across D0 at the canopy (box 8 D0 wide)",
-     ["7ft-cpd9", "7ft-default", "7ft-cpd21", "7ft-cpd32"]),
+     ["7ft-default", "7ft-cpd18", "7ft-cpd27", "7ft-cpd40"]),
     ("mesh7ft", "7 ft canopy: mesh convergence",
      ["7ft-h0.30", "7ft-h0.20", "7ft-h0.15"]),
     ("duration7ft", "7 ft canopy: is 4 s long enough? (the default run to 8 s, with and without hinge dashpots)",
