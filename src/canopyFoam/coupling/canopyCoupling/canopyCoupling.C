@@ -519,6 +519,12 @@ Foam::canopyCoupling::canopyCoupling
     structureSeconds_(0),
     ibSeconds_(0)
 {
+    // mesh.pointInCell (the cell tree's findInside) needs the tet
+    // decomposition's base points, which polyMesh computes collectively
+    // on first use: compute them on every rank now, before any rank looks
+    // up only the points it holds (a deadlock otherwise)
+    (void)mesh_.tetBasePtIs();
+
     const dictionary& dict = structure_.dict().subOrEmptyDict("coupling");
 
     const word schemeName(dict.getOrDefault<word>("scheme", "strong"));

@@ -780,7 +780,12 @@ Foam::ibStencil::ibStencil
     cellSlot_(),
     treeCentres_(),
     centreTree_()
-{}
+{
+    // mesh.pointInCell needs the tet decomposition's base points, which
+    // polyMesh computes collectively on first use: compute them on every
+    // rank here, before any rank tests only the markers it holds
+    (void)mesh_.tetBasePtIs();
+}
 
 
 // * * * * * * * * * * * * * * * * Destructor  * * * * * * * * * * * * * * * //
