@@ -34,41 +34,8 @@ typedef Foam::indexedOctree<Foam::treeDataPoint> pointTreeType;
 // either way, its presence in the stencil would not be
 const Foam::scalar phiMin = 1e-12;
 
-// mesh.pointInCell(p, celli) (tet decomposition), after the cheap test
-// that p lies in the bounding box of the cell's points (a cell lies in its
-// box: the same answer, without the tets for the cells p is not near)
-bool pointInCellFast
-(
-    const Foam::polyMesh& mesh,
-    const Foam::point& p,
-    const Foam::label celli
-)
-{
-    const Foam::pointField& pts = mesh.points();
-    const Foam::labelList& cellPts = mesh.cellPoints()[celli];
-    Foam::point lo(pts[cellPts[0]]);
-    Foam::point hi(lo);
-    for (const Foam::label pointi : cellPts)
-    {
-        lo = Foam::min(lo, pts[pointi]);
-        hi = Foam::max(hi, pts[pointi]);
-    }
-    for (Foam::direction d = 0; d < Foam::vector::nComponents; ++d)
-    {
-        if (p[d] < lo[d] || p[d] > hi[d])
-        {
-            return false;
-        }
-    }
-    return mesh.pointInCell(p, celli);
-}
-
-// Does p lie within tol of cell celli: in its bounding box grown by tol,
-// and at most tol outside the plane of each of its faces? For a convex cell
-// this is the cell grown by tol; it accepts a point on a face, edge or
-// corner whichever side's rounding says otherwise (mesh.pointInCell of a
-// point on a face can be true for one of its cells and false for the other)
-bool pointNearCell
+// Does p lie in the bounding box of cell celli's points, grown by tol?
+bool inCellBox
 (
     const Foam::polyMesh& mesh,
     const Foam::point& p,
@@ -91,6 +58,39 @@ bool pointNearCell
         {
             return false;
         }
+    }
+    return true;
+}
+
+// mesh.pointInCell(p, celli) (tet decomposition), after the cheap test
+// that p lies in the bounding box of the cell's points (a cell lies in its
+// box: the same answer, without the tets for the cells p is not near)
+bool pointInCellFast
+(
+    const Foam::polyMesh& mesh,
+    const Foam::point& p,
+    const Foam::label celli
+)
+{
+    return inCellBox(mesh, p, celli, 0) && mesh.pointInCell(p, celli);
+}
+
+// Does p lie within tol of cell celli: in its bounding box grown by tol,
+// and at most tol outside the plane of each of its faces? For a convex cell
+// this is the cell grown by tol; it accepts a point on a face, edge or
+// corner whichever side's rounding says otherwise (mesh.pointInCell of a
+// point on a face can be true for one of its cells and false for the other)
+bool pointNearCell
+(
+    const Foam::polyMesh& mesh,
+    const Foam::point& p,
+    const Foam::label celli,
+    const Foam::scalar tol
+)
+{
+    if (!inCellBox(mesh, p, celli, tol))
+    {
+        return false;
     }
 
     const Foam::vectorField& Sf = mesh.faceAreas();
