@@ -68,8 +68,14 @@ hid_t canopy_h5_fapl(void)
      * file is then refused by HDF5 instead of parsed, which HDF5 1.10.8
      * does not do memory-safely (canopy-fuzz's byte-flipped files). Not
      * the 1.10 format: its superblock marks a file open for writing, and a
-     * killed run would leave a file that cannot be appended to. */
-    if (H5Pset_libver_bounds(fapl, H5F_LIBVER_V18, H5F_LIBVER_V18) < 0) {
+     * killed run would leave a file that cannot be appended to.
+     * No aggregation blocks, so the file ends where its data does:
+     * otherwise, when read_state opens a file an output of this process is
+     * writing (HDF5 shares the open file), closing it releases the blocks
+     * and truncates the file under the writer. */
+    if (H5Pset_libver_bounds(fapl, H5F_LIBVER_V18, H5F_LIBVER_V18) < 0 ||
+        H5Pset_meta_block_size(fapl, 0) < 0 ||
+        H5Pset_small_data_block_size(fapl, 0) < 0) {
         H5Pclose(fapl);
         return -1;
     }
