@@ -1032,6 +1032,13 @@ static void act_time(fuzz *f)
     if (ratio > 50.0 && ratio <= 1e9) dt = h * 10.0;
     const int n = canopy_model_node_count(f->m);
     if (n > 3000 && dt > h) dt = h;
+    /* An implicit step on a large, stiff model may take minutes under the
+     * sanitizers (Newton x conjugate gradients x halvings): not a bug, but
+     * not what a bounded run can afford. */
+    const char *name = canopy_model_integrator(f->m);
+    if (n > 300 && (strcmp(name, "newmark") == 0 || strcmp(name, "hht") == 0 ||
+                    strcmp(name, "kang") == 0))
+        return;
     if (rnd(f, 2)) {
         before_call(f, "step", 0);
         st = canopy_model_step(f->m, dt > h * 2 ? h : dt);
