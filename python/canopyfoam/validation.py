@@ -12,9 +12,9 @@ failed is listed as such.
 Every run read is recorded in docs/validation/runs/<run id>.json
 (validation_archive.py), which is committed: a run that is not in
 build/validation (another machine made it) is read from its record. A
-study with a run in neither place keeps its section of the previous
-report, marked as kept; a new study's missing run is listed with the
-command that makes it.
+study none of whose runs is in either place keeps its section of the
+previous report, marked as kept; otherwise a missing run is listed with
+the command that makes it.
 
 Only the standard library and numpy are needed to run; matplotlib for the
 plots.
@@ -693,15 +693,22 @@ def complete_means(results, keep):
 
 def earlier_scheme(run):
     """Whether a run on a large canopy's tutorial keeps the earlier scheme
-    (its edits do not restore the full-load scheme)."""
-    return (run.tutorial in EARLIER_END_TIME
+    (one of the runs defined before the wide box, whose edits do not
+    restore the full-load scheme)."""
+    return (run.tutorial in EARLIER_END_TIME and narrow(run)
             and not all(e in run.edits for e in FULL_LOAD))
+
+
+def narrow(run):
+    """Whether a run restores its tutorial's earlier narrow box."""
+    return bool(run.edits) and run.edits[0][1] == NARROW_BOX_ENTRY
 
 
 def earlier_seven(run):
     """Whether a run on the 7 ft tutorial starts from its earlier default."""
-    return run.tutorial == SEVEN and run.edits[:len(SEVEN_EARLIER)] == \
-        SEVEN_EARLIER
+    skip = len(narrow_box(SEVEN) + max_norm(SEVEN)) if narrow(run) else 0
+    return (run.tutorial == SEVEN
+            and run.edits[skip:skip + len(SEVEN_EARLIER)] == SEVEN_EARLIER)
 
 STUDIES = [
     ("default7ft", "7 ft canopy: the main job (the tutorial's default)",
@@ -1009,7 +1016,9 @@ def run_row(run, rec, why):
                 "" if ci is None else ", mean ± %.2f (95 %%)" % ci,
                 " (drifting)" if note else "", _f(s["start"], "%.3g"),
                 _f(s["end"], "%.3g"),
-                "; horizontal ≤ %.2f" % h["max"] if h else "", freq,
+                ("; horizontal ≤ %.2f" % h["max"] if h else "")
+                + ("; suspension ≤ %.0f°" % r["swing"]["angleMax"]
+                   if r.get("swing") else ""), freq,
                 r["projectedDiameter"]["mean"],
                 _f(cd.get("weightBalance")), "%s / %s" % (
                     _f(r["coupling"]["meanIterationsSteady"], "%.1f"),
@@ -1028,7 +1037,7 @@ def cells_per_diameter(run):
     """Cells across D0 in the finest level of a run on a tutorial meshed
     from system/canopyMeshDict: its -cellsPerDiameter option, else the
     tutorial's dictionary; None for a narrow-box run."""
-    if run.edits and run.edits[0][1] == NARROW_BOX_ENTRY:
+    if narrow(run):
         return None
     if "-cellsPerDiameter" in run.options:
         return float(run.options[run.options.index("-cellsPerDiameter") + 1])
@@ -1355,7 +1364,7 @@ def write_report():
                 read[run.ident] = record(run)
         records = [(run,) + read[run.ident] for run in runs]
         absent = [run.ident for run, rec, _ in records if rec is None]
-        if absent and title in previous:
+        if absent and len(absent) == len(runs) and title in previous:
             # the section as the last report had it, from runs made elsewhere
             md += previous[title] + [
                 "(This section is kept from the previous report: %s %s "
@@ -1440,6 +1449,14 @@ def write_report():
                 md += [HANDBOOK_FLAT_CIRCULAR % (mass, " and ".join(
                     "%.2f m/s at C_D0 %.2f" % (v, c)
                     for c, v in flat_circular_handbook(mass))), ""]
+            if name == "default7ft":
+                md += ["7ft-default before its swing: 5.48 ± 0.08 m/s "
+                       "(95 %) over 4–7 s, C_D0 0.87, 0.90 D0, the "
+                       "projected diameter breathing at 1.5 Hz (1.3 cm); "
+                       "`bin/canopy-report build/validation/7ft-default "
+                       "--steady-start 4 --steady-end 7`. From about 6.5 s "
+                       "the parachute swings, the suspension reaching 47° "
+                       "by 12 s.", ""]
             md += ["Runs on the narrow box (7ft-narrow-default and the "
                    "studies before the wide box) were made before the "
                    "added-mass stabiliser's fix: with the implicit hinge "
