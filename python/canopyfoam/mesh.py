@@ -363,13 +363,16 @@ def make(case, cells_per_diameter=None, say=print):
         _run(case, f"log.refineMesh.level{i + 1}",
              ["refineMesh", "-overwrite", "-dict", "system/refineMeshDict.run"])
     # refineMesh -overwrite leaves its cell map in the start time's folder
+    # (which it makes when there is none: then it goes too)
     cell_map = os.path.join(case, "0", "polyMesh", "cellMap")
     if os.path.isfile(cell_map):
         os.remove(cell_map)
-        try:
-            os.rmdir(os.path.dirname(cell_map))
-        except OSError:
-            pass
+        for folder in (os.path.dirname(cell_map),
+                       os.path.join(case, "0")):
+            try:
+                os.rmdir(folder)
+            except OSError:
+                break
     spec.n_cells = cell_count(case)
     edge = spec.edge_per_cell * spec.h
     result = subprocess.run(
