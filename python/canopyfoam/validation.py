@@ -653,8 +653,9 @@ RUNS += [seven_wide("7ft-w%g" % w, "box %g D0 wide, 12 cells across D0" % w,
          for w in DOMAIN_WIDTHS]
 # Resolution at the canopy (every level and the fabric's edge follow)
 RESOLUTIONS = (18, 27, 40)
-RUNS += [seven_wide("7ft-cpd%d" % n, "box 8 D0 wide, %d cells across D0" % n,
-                    ["-cellsPerDiameter", "%d" % n])
+RUNS += [seven_wide("7ft-cpd%d" % n, "box 8 D0 wide, %d cells across D0, "
+                    "to 7 s" % n, ["-cellsPerDiameter", "%d" % n],
+                    end_time=7)
          for n in RESOLUTIONS]
 # The other tutorials as they are (wide box, nested refinement)
 RUNS += [
