@@ -854,20 +854,45 @@ def prepare(run):
                                % (run.ident, entry, rel, out.stderr.strip()))
 
 
-def execute(run, ranks):
-    prepare(run)
+def execute(run, ranks, resume=False):
+    """Run a case afresh, or (resume) continue its stopped run from its
+    latest written time (bin/canopy-run-case -continue); the wall time
+    recorded is then the sum of its parts."""
+    earlier = 0.0
+    if resume:
+        earlier, earlier_ranks = wall_time(run.case_dir)
+        if earlier is None or earlier_ranks != ranks:
+            raise RuntimeError("run %s: no stopped run on %d ranks to "
+                               "continue in %s" % (run.ident, ranks,
+                                                   run.case_dir))
+    else:
+        prepare(run)
     cmd = [os.path.join(run.case_dir, "Allrun"), "-np", str(ranks)]
-    cmd += run.options
+    cmd += run.options + (["-continue"] if resume else [])
     start = time.time()
     log = os.path.join(RUN_ROOT, run.ident + ".out")
-    print("canopy-validate: %s (%s) in %s, output in %s"
-          % (run.ident, run.label, run.case_dir, log), flush=True)
-    with open(log, "w") as out:
-        status = subprocess.run(cmd, stdout=out, stderr=subprocess.STDOUT,
-                                cwd=run.case_dir).returncode
-    wall = time.time() - start
-    with open(os.path.join(run.case_dir, "validation-wall-time"), "w") as f:
-        f.write("%.1f %d\n" % (wall, ranks))
+    print("canopy-validate: %s %s(%s) in %s, output in %s"
+          % (run.ident, "continued " if resume else "", run.label,
+             run.case_dir, log), flush=True)
+    def record_wall():
+        # kept current while the run goes, so a run killed with its
+        # session still has its time so far for a later --continue
+        with open(os.path.join(run.case_dir, "validation-wall-time"),
+                  "w") as f:
+            f.write("%.1f %d\n" % (earlier + time.time() - start, ranks))
+
+    with open(log, "a" if resume else "w") as out:
+        proc = subprocess.Popen(cmd, stdout=out, stderr=subprocess.STDOUT,
+                                cwd=run.case_dir)
+        while True:
+            record_wall()
+            try:
+                status = proc.wait(timeout=30)
+                break
+            except subprocess.TimeoutExpired:
+                pass
+    record_wall()
+    wall = earlier + time.time() - start
     with open(os.path.join(run.case_dir, "validation-code-version"), "w") as f:
         f.write(code_version() + "\n")
     print("canopy-validate: %s %s after %.0f s" % (
@@ -1686,6 +1711,10 @@ def main(argv=None):
     r.add_argument("-np", type=int, default=2, help="ranks (default 2)")
     r.add_argument("--force", action="store_true",
                    help="re-run complete runs too")
+    r.add_argument("--continue", dest="resume", action="store_true",
+                   help="continue stopped runs from their latest written "
+                   "time instead of starting them afresh (a long run in "
+                   "parts: stop it with Ctrl-C or kill, continue later)")
     sub.add_parser("report", help="write docs/validation.md from the "
                    "complete runs")
     sub.add_parser("list", help="list the studies and runs with their state")
@@ -1715,8 +1744,9 @@ def main(argv=None):
             print("canopy-validate: %s is complete (--force re-runs it)"
                   % ident)
             continue
+        resume = args.resume and run_state(run) == "failed"
         try:
-            ok = execute(run, args.np) and ok
+            ok = execute(run, args.np, resume) and ok
             record(run)     # its record in docs/validation/runs
         except RuntimeError as e:
             print("canopy-validate: %s" % e, file=sys.stderr)
