@@ -1127,9 +1127,13 @@ HANDBOOK_FLAT_CIRCULAR = (
     "beyond any flat circular canopy in these sources.")
 
 
-def gci_lines(results):
-    """Roache's GCI of descent speed, C_D0, C_Dp and Dp/D0 from the three
-    finest complete runs of a resolution study (gci.py), as markdown."""
+def resolution_estimates(results):
+    """Roache's GCI of descent speed, C_D0, C_Dp, Dp/D0 (and the breathing
+    frequency, where every level resolves it) from the three finest
+    complete runs of a resolution study (gci.py). Returns (runs, table):
+    runs [(cells across D0, run)] finest first, table {quantity: (values
+    finest first, gci.gci's dict)}; runs has fewer than three entries and
+    table is empty when the study is not complete enough."""
     from . import gci as gci_mod
     done = []
     for run, rec in results:
@@ -1140,9 +1144,7 @@ def gci_lines(results):
         done.append((n, run, rec["analysis"]))
     done.sort(key=lambda x: -x[0])
     if len(done) < 3:
-        return ["Grid convergence index: needs three complete runs, has "
-                "%d (%s)." % (len(done), ", ".join(r.ident for _, r, _ in
-                                                  done) or "none"), ""]
+        return [(n, r) for n, r, _ in done], {}
     done = done[:3]
     d0 = done[0][2]["parameters"]["nominalDiameter"]["value"]
     h = [d0 / n for n, _, _ in done]
@@ -1158,23 +1160,58 @@ def gci_lines(results):
     if all(a["breathing"].get("resolved") for _, _, a in done):
         for v, (_, _, a) in zip(values, done):
             v["breathing frequency [Hz]"] = a["breathing"]["frequency"]
-    lines = ["Grid convergence (Roache's GCI, Celik et al. 2008; "
-             "python/canopyfoam/gci.py) from %s (%s cells across D0):"
-             % (", ".join(r.ident for _, r, _ in done),
-                " / ".join("%g" % n for n, _, _ in done)), "",
-             "| quantity | finest, medium, coarse | convergence | observed "
-             "order | extrapolated | GCI of the finest |",
-             "|---|---|---|---|---|---|"]
+    table = {}
     for key in values[0]:
         f = [v[key] for v in values]
         # formal order 1: the IB's regularised delta function is first
         # order at the interface (Lai & Peskin 2000, J. Comput. Phys. 160)
-        out = gci_mod.gci(h, f, p_formal=1.0, p_max=3.0)
+        table[key] = (f, gci_mod.gci(h, f, p_formal=1.0, p_max=3.0))
+    return [(n, r) for n, r, _ in done], table
+
+
+def gci_lines(results):
+    """The resolution study's GCI table (resolution_estimates) as
+    markdown."""
+    done, table = resolution_estimates(results)
+    if not table:
+        return ["Grid convergence index: needs three complete runs, has "
+                "%d (%s)." % (len(done), ", ".join(r.ident for _, r in
+                                                  done) or "none"), ""]
+    lines = ["Grid convergence (Roache's GCI, Celik et al. 2008; "
+             "python/canopyfoam/gci.py; formal order 1, the IB's delta "
+             "function, where the observed order is not usable) from %s "
+             "(%s cells across D0):"
+             % (", ".join(r.ident for _, r in done),
+                " / ".join("%g" % n for n, _ in done)), "",
+             "| quantity | finest, medium, coarse | convergence | observed "
+             "order | extrapolated | GCI of the finest |",
+             "|---|---|---|---|---|---|"]
+    for key, (f, out) in table.items():
         lines.append("| %s | %s | %s | %s | %.4g | %.1f %% (Fs %.3g) |" % (
             key, ", ".join("%.4g" % x for x in f), out["kind"],
             "—" if out["order"] is None else "%.2f" % out["order"],
             out["extrapolated"], 100 * out["gci"], out["safety"]))
     return lines + [""]
+
+
+def converged(study):
+    """The converged values of a resolution study, for the benchmarks: a
+    dict {quantity: {finest, extrapolated, gci, kind, runs}} from the
+    committed records in docs/validation/runs (resolution_estimates); the finest run's value is the
+    estimate, the GCI its uncertainty."""
+    ids = dict((s[0], s[2]) for s in STUDIES).get(study)
+    if ids is None:
+        raise SystemExit("canopy-validate: unknown study '%s'" % study)
+    results = [(RUN_BY_ID[i], archive.load(ARCHIVE_DIR, RUN_BY_ID[i])[0])
+               for i in ids]
+    done, table = resolution_estimates(results)
+    if not table:
+        raise SystemExit("canopy-validate: %s needs three complete runs, "
+                         "has %d" % (study, len(done)))
+    return {key: {"finest": f[0], "extrapolated": out["extrapolated"],
+                  "gci": out["gci"], "kind": out["kind"],
+                  "runs": [r.ident for _, r in done]}
+            for key, (f, out) in table.items()}
 
 
 def plot_study(name, title, runs_results, reference_lines=()):
@@ -1744,6 +1781,10 @@ def main(argv=None):
     sub.add_parser("report", help="write docs/validation.md from the "
                    "complete runs")
     sub.add_parser("list", help="list the studies and runs with their state")
+    c = sub.add_parser("converged", help="print the converged values of a "
+                       "resolution study (finest run, extrapolation, GCI) "
+                       "as JSON")
+    c.add_argument("study")
     args = p.parse_args(argv)
 
     if args.action == "list":
@@ -1756,6 +1797,10 @@ def main(argv=None):
                         archive.load(ARCHIVE_DIR, run)[0] is not None:
                     state = "archived"
                 print("  %-16s %-9s %s" % (i, state, run.label))
+        return 0
+    if args.action == "converged":
+        import json
+        print(json.dumps(converged(args.study), indent=1))
         return 0
     if args.action == "report":
         write_report()

@@ -1,0 +1,109 @@
+"""figures.py — the parachute benchmark's figures from finished runs: the main job's C_D0 error against the resolution study's converged value, and each resolution level's cost and coupling iterations in steady descent.
+
+Usage: python3 figures.py mainjob <case dir> <wall seconds>
+       python3 figures.py levels
+Prints BENCH lines (name value unit) and '# ' comment lines.
+
+mainjob: C_D0 of the case over the interval the 7 ft study reads (the
+run 7ft-default's steady interval in python/canopyfoam/validation.py),
+against the finest run of the study resolution7ft and its GCI (bin/
+canopy-validate converged resolution7ft, from the committed records).
+
+levels: for each run of resolution7ft found in build/validation (the
+study's own runs, 2 ranks), over the same interval: cells, wall seconds
+per time step (ClockTime increments of the solver log) and coupling
+iterations per step (canopy.dat).
+"""
+
+import os
+import re
+import sys
+
+TOP = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(
+    os.path.realpath(__file__)))))
+sys.path.insert(0, os.path.join(TOP, "python"))
+
+from canopyfoam import report as rep          # noqa: E402
+from canopyfoam import validation as val      # noqa: E402
+
+STUDY = "resolution7ft"
+INTERVAL_RUN = "7ft-default"
+
+
+def interval():
+    run = val.RUN_BY_ID[INTERVAL_RUN]
+    return run.steady_start, run.steady_end
+
+
+def main_job(case_dir, wall):
+    t0, t1 = interval()
+    a = rep.analyse(case_dir, steady_start=t0, steady_end=t1)
+    cd0 = a["dragCoefficient"]["weightBalance"]
+    print("# the main job: C_D0 %.4f over %g-%g s, descent %.3f m/s"
+          % (cd0, t0, t1, a["descentVelocity"]["mean"]))
+    print("BENCH parachute_main_job_wall_time %.0f s" % wall)
+    print("BENCH parachute_main_job_C_D0 %.4f" % cd0)
+    try:
+        conv = val.converged(STUDY)["C_D0 (weight)"]
+    except SystemExit as e:
+        print("# no converged value: %s" % e)
+        return
+    ref = conv["finest"]
+    print("# converged C_D0 (finest of %s): %.4f, GCI %.1f %% (%s), "
+          "extrapolated %.4f" % (", ".join(conv["runs"]), ref,
+                                 100 * conv["gci"], conv["kind"],
+                                 conv["extrapolated"]))
+    print("BENCH parachute_main_job_C_D0_error %.4f fraction"
+          % ((cd0 - ref) / ref))
+
+
+def step_costs(log, t0, t1):
+    """Wall seconds per time step over steps that end in [t0, t1]."""
+    times, clocks = [], []
+    t = None
+    with open(log, errors="replace") as f:
+        for line in f:
+            if line.startswith("Time = "):
+                t = float(line.split()[2])
+            elif line.startswith("ExecutionTime") and t is not None:
+                m = re.search(r"ClockTime = ([0-9.eE+-]+)", line)
+                times.append(t)
+                clocks.append(float(m.group(1)))
+    sel = [i for i in range(1, len(times)) if t0 <= times[i] <= t1]
+    if not sel:
+        return None, 0
+    return (clocks[sel[-1]] - clocks[sel[0] - 1]) / len(sel), len(sel)
+
+
+def levels():
+    t0, t1 = interval()
+    ids = dict((s[0], s[2]) for s in val.STUDIES)[STUDY]
+    for ident in ids:
+        run = val.RUN_BY_ID[ident]
+        n = val.cells_per_diameter(run)
+        log = val.solver_log(run.case_dir)
+        if val.run_state(run) != "complete":
+            print("# %s: not in build/validation (bin/canopy-validate run "
+                  "%s)" % (ident, ident))
+            continue
+        cost, steps = step_costs(log, t0, t1)
+        series = rep.load_case(run.case_dir)
+        m = (series.t >= t0) & (series.t <= t1)
+        its = series.column("coupling_iterations")[m].mean()
+        cells = val.cell_count(run.case_dir)
+        print("# %s: %d cells, %d steps in %g-%g s" % (ident, cells, steps,
+                                                       t0, t1))
+        name = "parachute_cpd%g" % n
+        print("BENCH %s_cells %d cells" % (name, cells))
+        print("BENCH %s_time_per_step_2_ranks %.3f s" % (name, cost))
+        print("BENCH %s_coupling_iterations %.2f iterations/step"
+              % (name, its))
+
+
+if __name__ == "__main__":
+    if len(sys.argv) == 4 and sys.argv[1] == "mainjob":
+        main_job(sys.argv[2], float(sys.argv[3]))
+    elif len(sys.argv) == 2 and sys.argv[1] == "levels":
+        levels()
+    else:
+        sys.exit(__doc__.split("\n\n")[1])
