@@ -674,6 +674,17 @@ RUNS += [
                end_time=7)
     for e in (0.83, 1.88)
 ]
+# Turbulence: the WALE LES model with the low-dissipation LUST convection
+# scheme (constant/turbulenceProperties, 0.orig/nut) against the laminar
+# default, at the default resolution
+LES = [("constant/turbulenceProperties", "simulationType", "LES"),
+       ("system/fvSchemes", "divSchemes/div(phi,U)", "Gauss LUST grad(U)")]
+RUNS += [
+    seven_wide("7ft-LUST", "box 8 D0 wide, 12 cells across D0, laminar, "
+               "LUST convection, to 7 s", edits=LES[1:], end_time=7),
+    seven_wide("7ft-LES", "box 8 D0 wide, 12 cells across D0, LES (WALE, "
+               "LUST convection), to 7 s", edits=LES, end_time=7),
+]
 # The other tutorials as they are (wide box, nested refinement)
 RUNS += [
     Run("T10-default", T10, "the tutorial's default: 100 kg, box 8 D0 wide, "
@@ -748,6 +759,9 @@ STUDIES = [
     ("edgeLength7ft", "7 ft canopy: the structure's resolution (12 cells "
      "across D0; fabric edge in finest cells)",
      ["7ft-edge0.83", "7ft-default", "7ft-edge1.88"]),
+    ("turbulence7ft", "7 ft canopy: laminar against LES (WALE, LUST "
+     "convection; 12 cells across D0)",
+     ["7ft-default", "7ft-LUST", "7ft-LES"]),
     ("mesh7ft", "7 ft canopy: mesh convergence",
      ["7ft-h0.30", "7ft-h0.20", "7ft-h0.15"]),
     ("duration7ft", "7 ft canopy: is 4 s long enough? (the default run to 8 s, with and without hinge dashpots)",
