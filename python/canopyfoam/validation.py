@@ -1142,17 +1142,33 @@ HANDBOOK_FLAT_CIRCULAR = (
     "beyond any flat circular canopy in these sources.")
 
 
-def resolution_estimates(results):
+def fabric_edge_cells(run):
+    """The fabric's edge in finest cells of a run on the 7 ft tutorial
+    (its edgeLengthPerCell edit, else the tutorial's 1.25)."""
+    edits = dict((e[1], e[2]) for e in run.edits if e[0] == MESH_DICT)
+    path = os.path.join(TOP, "tutorials", run.tutorial, MESH_DICT)
+    if "edgeLengthPerCell" in edits:
+        return float(edits["edgeLengthPerCell"])
+    with open(path) as f:
+        m = re.search(r"^\s*edgeLengthPerCell\s+([0-9.eE+-]+)\s*;",
+                      f.read(), re.M)
+    return float(m.group(1))
+
+
+def resolution_estimates(results, fineness=None):
     """Roache's GCI of descent speed, C_D0, C_Dp, Dp/D0 (and the breathing
     frequency, where every level resolves it) from the three finest
-    complete runs of a resolution study (gci.py). Returns (runs, table):
-    runs [(cells across D0, run)] finest first, table {quantity: (values
-    finest first, gci.gci's dict)}; runs has fewer than three entries and
-    table is empty when the study is not complete enough."""
+    complete runs of a resolution study (gci.py). fineness(run) is the
+    resolution, larger finer (default cells across D0; the GCI takes the
+    sizes 1/fineness). Returns (runs, table): runs [(fineness, run)]
+    finest first, table {quantity: (values finest first, gci.gci's
+    dict)}; runs has fewer than three entries and table is empty when the
+    study is not complete enough."""
     from . import gci as gci_mod
+    fineness = fineness or cells_per_diameter
     done = []
     for run, rec in results:
-        n = cells_per_diameter(run)
+        n = fineness(run)
         if (n is None or rec is None or not rec["complete"]
                 or rec["analysis"] is None):
             continue
@@ -1162,7 +1178,7 @@ def resolution_estimates(results):
         return [(n, r) for n, r, _ in done], {}
     done = done[:3]
     d0 = done[0][2]["parameters"]["nominalDiameter"]["value"]
-    h = [d0 / n for n, _, _ in done]
+    h = [1.0 / n for n, _, _ in done]
 
     def quantities(a):
         cd0 = a["dragCoefficient"].get("weightBalance")
@@ -1184,10 +1200,10 @@ def resolution_estimates(results):
     return [(n, r) for n, r, _ in done], table
 
 
-def gci_lines(results):
+def gci_lines(results, fineness=None, unit="cells across D0"):
     """The resolution study's GCI table (resolution_estimates) as
     markdown."""
-    done, table = resolution_estimates(results)
+    done, table = resolution_estimates(results, fineness)
     if not table:
         return ["Grid convergence index: needs three complete runs, has "
                 "%d (%s)." % (len(done), ", ".join(r.ident for _, r in
@@ -1195,9 +1211,9 @@ def gci_lines(results):
     lines = ["Grid convergence (Roache's GCI, Celik et al. 2008; "
              "python/canopyfoam/gci.py; formal order 1, the IB's delta "
              "function, where the observed order is not usable) from %s "
-             "(%s cells across D0):"
+             "(%s %s):"
              % (", ".join(r.ident for _, r in done),
-                " / ".join("%g" % n for n, _ in done)), "",
+                " / ".join("%g" % n for n, _ in done), unit), "",
              "| quantity | finest, medium, coarse | convergence | observed "
              "order | extrapolated | GCI of the finest |",
              "|---|---|---|---|---|---|"]
@@ -1206,6 +1222,35 @@ def gci_lines(results):
             key, ", ".join("%.4g" % x for x in f), out["kind"],
             "—" if out["order"] is None else "%.2f" % out["order"],
             out["extrapolated"], 100 * out["gci"], out["safety"]))
+    return lines + [""]
+
+
+def two_level_lines(results, what):
+    """Roache's two-level estimate of a refinement by 2 with formal order
+    1: the finer run's uncertainty Fs |f1 - f2| / (2^1 - 1) with Fs = 3
+    (Roache 1998, for two levels), as markdown."""
+    done = [(run, rec["analysis"]) for run, rec in results
+            if rec is not None and rec["complete"]
+            and rec["analysis"] is not None]
+    if len(done) != 2:
+        return ["Two-level estimate: needs both runs complete, has %d."
+                % len(done), ""]
+    (run2, a2), (run1, a1) = done      # coarse first, as the study lists
+    lines = ["Two-level estimate of %s (Roache: GCI = 3 |f1 - f2| / |f1| "
+             "for a ratio 2 and order 1), %s against %s:" % (
+                 what, run1.ident, run2.ident), "",
+             "| quantity | %s | %s | GCI of %s |" % (run1.ident, run2.ident,
+                                                      run1.ident),
+             "|---|---|---|---|"]
+    d0 = a1["parameters"]["nominalDiameter"]["value"]
+    for key, get in (
+            ("descent speed [m/s]", lambda a: a["descentVelocity"]["mean"]),
+            ("C_D0 (weight)",
+             lambda a: a["dragCoefficient"]["weightBalance"]),
+            ("Dp/D0", lambda a: a["projectedDiameter"]["mean"] / d0)):
+        f1, f2 = get(a1), get(a2)
+        lines.append("| %s | %.4g | %.4g | %.1f %% |" % (
+            key, f1, f2, 100 * 3 * abs(f1 - f2) / abs(f1)))
     return lines + [""]
 
 
@@ -1532,6 +1577,20 @@ def write_report():
                    ""]
         if name == "resolution7ft":
             md += gci_lines(results)
+        if name == "edgeLength7ft":
+            md += ["The fabric's edge in finest cells; the structure's "
+                   "resolution is the inverse of it.", ""]
+            md += gci_lines(results, lambda run: 1.0 / fabric_edge_cells(
+                run), "per finest cell: the edge's inverse")
+        if name == "timeStep7ft":
+            md += two_level_lines(results, "the time step (maxCo 0.5 and "
+                                  "0.25; Euler implicit, formal order 1)")
+        if name == "turbulence7ft":
+            md += ["7ft-LUST changes the convection scheme alone "
+                   "(div(phi,U) Gauss LUST grad(U): 75 % central, 25 % "
+                   "linear upwind); 7ft-LES adds the WALE model "
+                   "(simulationType LES). Judge their differences "
+                   "against the resolution study's GCI.", ""]
         if name == "domain7ft":
             wide = sorted(
                 [(float(dict((e[1], e[2]) for e in run.edits).get(
