@@ -44,8 +44,12 @@ Description
         failed step) and the run stops with the reason.
 
     Restart
-        startFrom latestTime continues from the written fields, the IB
-        force (canopyForce) and the structure's state at that time.
+        startFrom latestTime continues from the written fields, the time
+        value to every digit (restoreExactTime.H), the coupling's state
+        (<time>/uniform/canopyCoupling: the IB force, the frame, the
+        stabiliser's balance, IQN-ILS's columns) and the structure's
+        state at that time, bit for bit as if uninterrupted
+        (tests/openfoam/restartMatrix).
 
     Output
         canopyForce (the IB force density, written with the fields);
@@ -76,6 +80,7 @@ int main(int argc, char *argv[])
     #include "addCheckCaseOptions.H"
     #include "setRootCaseLists.H"
     #include "createTime.H"
+    #include "restoreExactTime.H"
     #include "createMesh.H"
     canopyPimpleControl pimple(mesh);
     #include "createTimeControls.H"
@@ -92,7 +97,7 @@ int main(int argc, char *argv[])
     {
         #include "readTimeControls.H"
         #include "CourantNo.H"
-        #include "setDeltaT.H"
+        #include "setCanopyDeltaT.H"
 
         // The last good state, written if this step fails
         #include "storeLastGoodState.H"

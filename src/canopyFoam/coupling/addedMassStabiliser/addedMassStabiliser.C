@@ -158,4 +158,24 @@ void Foam::addedMassStabiliser::update
 }
 
 
+void Foam::addedMassStabiliser::restart
+(
+    const dictionary& state,
+    const word& entry,
+    const vectorField& balance
+)
+{
+    if (balance.size() != balanceAcceleration_.size())
+    {
+        FatalIOErrorInFunction(state)
+            << "Entry '" << entry << "' holds " << balance.size()
+            << " accelerations, but the stabiliser acts on "
+            << balanceAcceleration_.size() << " nodes (was coupling.addedMass"
+            << " or the structure changed since it was written?)"
+            << exit(FatalIOError);
+    }
+    balanceAcceleration_ = balance;
+}
+
+
 // ************************************************************************* //

@@ -263,11 +263,35 @@ void Foam::canopyCoupling::readCouplingState()
         frameOrigin_ = state.get<vector>("frameOrigin");
         frameVelocity_ = state.get<vector>("frameVelocity");
     }
+    if (addedMass_->active())
+    {
+        if (state.found("addedMassBalance"))
+        {
+            addedMass_->restart
+            (
+                state, "addedMassBalance",
+                state.get<vectorField>("addedMassBalance")
+            );
+        }
+        else
+        {
+            WarningInFunction
+                << "No entry 'addedMassBalance' in " << io.objectPath()
+                << ": the added-mass stabiliser's first balance after the"
+                << " restart is zero" << endl;
+        }
+    }
+    acceleration_->readState(state);
+    state.readIfPresent("runStartTime", runStartTime_);
 }
 
 
 void Foam::canopyCoupling::writeCouplingState() const
 {
+    // ASCII (a dictionary cannot hold binary fields) with every digit, so
+    // that a restart continues exactly: the precision is set before the
+    // entries are added, because an entry is formatted when it is added
+    const unsigned precision = IOstream::defaultPrecision(17);
     IOdictionary state(couplingStateIO(IOobject::NO_READ));
     state.add("markerForce", markerForceTotal_);
     state.add("markerLevels", markers_->levels());
@@ -277,10 +301,12 @@ void Foam::canopyCoupling::writeCouplingState() const
     {
         state.add("lineDragForce", lineDrag_->forces());
     }
-
-    // ASCII (a dictionary cannot hold binary fields) with every digit, so
-    // that a restart continues exactly
-    const unsigned precision = IOstream::defaultPrecision(17);
+    if (addedMass_->active())
+    {
+        state.add("addedMassBalance", addedMass_->balanceAcceleration());
+    }
+    acceleration_->writeState(state);
+    state.add("runStartTime", runStartTime_);
     state.writeObject
     (
         IOstream::ASCII,
@@ -516,6 +542,7 @@ Foam::canopyCoupling::canopyCoupling
     frameAcceleration_(Zero),
     frameVelocityStart_(Zero),
     failure_(),
+    runStartTime_(mesh.time().startTime().value()),
     structureSeconds_(0),
     ibSeconds_(0)
 {

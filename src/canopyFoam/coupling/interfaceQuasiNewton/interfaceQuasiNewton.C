@@ -5,6 +5,7 @@
 
 #include "interfaceQuasiNewton.H"
 #include "UPtrList.H"
+#include "SubList.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -184,6 +185,60 @@ void Foam::interfaceQuasiNewton::relax
             x += c[j]*W[j];
         }
     }
+}
+
+
+void Foam::interfaceQuasiNewton::writeState(dictionary& dict) const
+{
+    // The past steps' columns as the next reset() leaves them: this step's
+    // joined at the end, the oldest dropped beyond reuse_
+    List<List<scalarField>> pastV(pastV_), pastW(pastW_);
+    if (reuse_ > 0 && V_.size())
+    {
+        pastV.append(List<scalarField>(V_));
+        pastW.append(List<scalarField>(W_));
+    }
+    const label drop = max(pastV.size() - reuse_, 0);
+    dict.add("quasiNewtonV", SubList<List<scalarField>>(pastV, pastV.size() - drop, drop));
+    dict.add("quasiNewtonW", SubList<List<scalarField>>(pastW, pastW.size() - drop, drop));
+}
+
+
+void Foam::interfaceQuasiNewton::readState(const dictionary& dict)
+{
+    // A restart written without them (or without IQN-ILS) starts with no
+    // history, as the run's first step does
+    if (!dict.found("quasiNewtonV") && !dict.found("quasiNewtonW"))
+    {
+        return;
+    }
+    const List<List<scalarField>> pastV
+    (
+        dict.get<List<List<scalarField>>>("quasiNewtonV")
+    );
+    const List<List<scalarField>> pastW
+    (
+        dict.get<List<List<scalarField>>>("quasiNewtonW")
+    );
+    bool fits = pastV.size() == pastW.size() && pastV.size() <= reuse_;
+    forAll(pastV, s)
+    {
+        fits = fits && pastV[s].size() == pastW[s].size();
+    }
+    if (!fits)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entries 'quasiNewtonV' and 'quasiNewtonW' hold "
+            << pastV.size() << " and " << pastW.size() << " time steps of"
+            << " columns that do not pair up or exceed coupling.reuse = "
+            << reuse_ << exit(FatalIOError);
+    }
+    pastV_ = pastV;
+    pastW_ = pastW;
+    V_.clear();
+    W_.clear();
+    previousResidual_.clear();
+    previousOutput_.clear();
 }
 
 
