@@ -646,6 +646,14 @@ RUNS += [
     seven_wide("7ft-default", "the tutorial's default: box 8 D0 wide, "
                "12 cells across D0 at the canopy, to 12 s"),
 ]
+# The free descent's statistics: the default run long enough for the
+# swing's steady state (about ten of its periods after it has grown)
+RUNS += [
+    Run("7ft-free40", SEVEN, "the tutorial's default (free flight) to 40 s; "
+        "interval 10-40 s, the swinging descent",
+        edits=[("system/controlDict", "endTime", "40")], reference="7ft",
+        steady_start=10, steady_end=40),
+]
 # Domain: the box's width at the default resolution at the canopy
 DOMAIN_WIDTHS = (2.8, 5.6, 11)
 RUNS += [seven_wide("7ft-w%g" % w, "box %g D0 wide, 12 cells across D0" % w,
@@ -754,6 +762,8 @@ STUDIES = [
       "C9-default", "cross-default", "cross-folded-default"]),
     ("resolution7ft", "7 ft canopy: cells across D0 at the canopy (box 8 D0 wide)",
      ["7ft-default", "7ft-cpd18", "7ft-cpd27", "7ft-cpd40"]),
+    ("freeDescent7ft", "7 ft canopy in free flight: the swinging descent "
+     "over 10-40 s (12 cells across D0)", ["7ft-free40"]),
     ("timeStep7ft", "7 ft canopy: the time step (12 cells across D0)",
      ["7ft-default", "7ft-co0.25"]),
     ("edgeLength7ft", "7 ft canopy: the structure's resolution (12 cells "
