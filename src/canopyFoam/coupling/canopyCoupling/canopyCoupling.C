@@ -485,8 +485,7 @@ void Foam::canopyCoupling::writeSeries()
 
 Foam::canopyCoupling::canopyCoupling
 (
-    const fvMesh& mesh,
-    bool forceExplicit
+    const fvMesh& mesh
 )
 :
     mesh_(mesh),
@@ -503,7 +502,6 @@ Foam::canopyCoupling::canopyCoupling
     lineDrag_(),
     UName_("U"),
     markerForceTotal_(),
-    lastIncrement_(),
     markerForceStart_(),
     force_
     (
@@ -569,11 +567,6 @@ Foam::canopyCoupling::canopyCoupling
             << "Entry 'coupling.scheme' = " << schemeName
             << " is not a coupling scheme; valid: strong explicit"
             << exit(FatalIOError);
-    }
-
-    if (forceExplicit)
-    {
-        scheme_ = scheme::explicitScheme;
     }
 
     rho_ = dict.getOrDefault<scalar>("rho", 1.2);
@@ -869,24 +862,12 @@ void Foam::canopyCoupling::forcingIncrement(const volVectorField& U)
         }
     }
 
-    lastIncrement_ = markerForce;
     markerForceTotal_ += markerForce;
     velocityStencil_->spread(markerForce, force_.primitiveFieldRef());
     force_.correctBoundaryConditions();
     faceForce_.clear();
     markerForce_ = sum(markerForceTotal_);
     slip_ = slip/max(Uref_, vn.size() ? max(mag(vn)) : 0);
-}
-
-
-void Foam::canopyCoupling::addForcingIncrement
-(
-    const scalar factor,
-    vectorField& cellField
-) const
-{
-    sectionTimer timer(ibSeconds_);
-    velocityStencil_->spread(vectorField(factor*lastIncrement_), cellField);
 }
 
 
