@@ -147,6 +147,19 @@ canopy_status canopy_model_add_node_mass(canopy_model *model, int node,
 /* Hold a node fixed (1) or release it (0). A fixed node keeps its velocity
  * (normally zero) and ignores forces. */
 canopy_status canopy_model_set_fixed(canopy_model *model, int node, int fixed);
+/* Put a node on a guide: a straight frictionless wire through its current
+ * position along axis (any length; NULL or 0 0 0 takes it off). It then
+ * moves along the wire alone, with the acceleration e (e.F) / (e.M e) for
+ * e = axis / |axis|, F its force and M its inertia; the wire takes the
+ * rest of F. Its velocity (and carried acceleration) across the wire is
+ * removed now. A guided node must not be fixed, and the integrator must
+ * not be kang (canopy_model_prepare says so). Like set_fixed, this drops
+ * the checkpoint. */
+canopy_status canopy_model_set_guide(canopy_model *model, int node,
+                                     const double axis[3]);
+/* A node's guide direction (unit length), 0 0 0 when it has none. */
+canopy_status canopy_model_get_guide(const canopy_model *model, int node,
+                                     double axis[3]);
 
 /* Add a spring i–j. Rest length (and, for MODEL_I, rest vector) = the nodes'
  * current separation, which must be positive (seed 000 Model-II: rest length

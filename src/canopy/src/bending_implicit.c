@@ -139,8 +139,10 @@ canopy_status canopy_hinge_damping_implicit_update(canopy_model *m, double h)
     /* r = b = -h (C v) on free rows; fixed rows stay 0 throughout */
     for (int k = 0; k < N; ++k) r[k] = 0.0;
     add_cached_damping(m, v, r, -h, 0);
-    for (int i = 0; i < m->nodes.count; ++i)
+    for (int i = 0; i < m->nodes.count; ++i) {
         if (m->nodes.fixed[i]) r[3 * i] = r[3 * i + 1] = r[3 * i + 2] = 0.0;
+        canopy_guide_project(m, i, r + 3 * i);   /* guided: along the guide */
+    }
     const double b_norm = sqrt(dot(N, r, r));
     if (b_norm == 0.0) return CANOPY_OK;
 
@@ -148,8 +150,9 @@ canopy_status canopy_hinge_damping_implicit_update(canopy_model *m, double h)
     for (int k = 0; k < N; ++k) {
         inc[k] = 0.0;
         z[k] = r[k] / diag[k];
-        p[k] = z[k];
     }
+    for (int i = 0; i < m->nodes.count; ++i) canopy_guide_project(m, i, z + 3 * i);
+    for (int k = 0; k < N; ++k) p[k] = z[k];
     double rz = dot(N, r, z);
     const double tol = 1e-10 * b_norm;
     const int max_it = N < 2000 ? N + 20 : 2000 + N / 10;
@@ -157,6 +160,8 @@ canopy_status canopy_hinge_damping_implicit_update(canopy_model *m, double h)
     for (int it = 1; it <= max_it; ++it) {
         apply_mass(m, p, Ap);
         add_cached_damping(m, p, Ap, h, 1);
+        for (int i = 0; i < m->nodes.count; ++i)
+            canopy_guide_project(m, i, Ap + 3 * i);
         const double pAp = dot(N, p, Ap);
         if (!(pAp > 0.0)) break;
         const double alpha = rz / pAp;
@@ -170,6 +175,8 @@ canopy_status canopy_hinge_damping_implicit_update(canopy_model *m, double h)
             return CANOPY_OK;
         }
         for (int k = 0; k < N; ++k) z[k] = r[k] / diag[k];
+        for (int i = 0; i < m->nodes.count; ++i)
+            canopy_guide_project(m, i, z + 3 * i);
         const double rz_new = dot(N, r, z);
         const double beta = rz_new / rz;
         rz = rz_new;

@@ -100,6 +100,6 @@ void canopy_accelerations(const canopy_model *m, const double *x,
             a[3 * i] = a[3 * i + 1] = a[3 * i + 2] = 0.0;
             continue;
         }
-        canopy_inertia_solve(m, i, a + 3 * i);
+        canopy_node_acceleration(m, i, a + 3 * i);
     }
 }

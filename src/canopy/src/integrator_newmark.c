@@ -54,7 +54,16 @@ static void jacobian_apply(const canopy_model *m, const hht_coeffs *c,
             const int k = 3 * i + d;
             y[k] = cm * mu[d] + (1.0 + c->alpha) * (y[k] + cd * tmp[k]);
         }
+        canopy_guide_project(m, i, y + 3 * i);
     }
+}
+
+/* z = P (r / diag): the Jacobi step, kept on the guided nodes' guides. */
+static void precondition(const canopy_model *m, const double *r,
+                         const double *diag, double *z)
+{
+    for (int k = 0; k < 3 * m->nodes.count; ++k) z[k] = r[k] / diag[k];
+    for (int i = 0; i < m->nodes.count; ++i) canopy_guide_project(m, i, z + 3 * i);
 }
 
 /* Solve J delta = rhs by preconditioned CG to relative tolerance rtol.
@@ -66,10 +75,10 @@ static int cg_solve(canopy_model *m, const hht_coeffs *c, const double *x,
     const int N = 3 * m->nodes.count;
     double *r = m->work[8], *p = m->work[9], *Ap = m->work[10],
            *z = m->work[11], *tmp = m->work[12];
+    precondition(m, rhs, diag, z);
     for (int k = 0; k < N; ++k) {
         delta[k] = 0.0;
         r[k] = rhs[k];
-        z[k] = r[k] / diag[k];
         p[k] = z[k];
     }
     const double r0 = sqrt(dot_free(m, r, r));
@@ -86,7 +95,7 @@ static int cg_solve(canopy_model *m, const hht_coeffs *c, const double *x,
             r[k] -= a * Ap[k];
         }
         if (sqrt(dot_free(m, r, r)) <= rtol * r0) return it;
-        for (int k = 0; k < N; ++k) z[k] = r[k] / diag[k];
+        precondition(m, r, diag, z);
         const double rz_new = dot_free(m, r, z);
         const double b = rz_new / rz;
         rz = rz_new;
@@ -134,6 +143,8 @@ static double hht_residual(const canopy_model *m, const hht_coeffs *c,
                           : inertia[d] - (1.0 + c->alpha) * s->F1[k] + c->alpha * s->Fn[k];
             if (!m->nodes.fixed[i]) ma2 += inertia[d] * inertia[d];
         }
+        /* a guided node: the guide takes the residual across it */
+        canopy_guide_project(m, i, s->R + 3 * i);
     }
     *ma_norm = sqrt(ma2);
     return sqrt(dot_free(m, s->R, s->R));
@@ -161,7 +172,7 @@ static canopy_status hht_step(canopy_model *m, double dt, double alpha)
             a[d] = m->nodes.fixed[i] ? 0.0
                  : carried          ? m->nodes.acc[3 * i + d]
                                     : Fn[3 * i + d];
-        if (!m->nodes.fixed[i] && !carried) canopy_inertia_solve(m, i, a);
+        if (!m->nodes.fixed[i] && !carried) canopy_node_acceleration(m, i, a);
     }
     /* Jacobi preconditioner from per-node stiffness and dashpot sums. */
     for (int k = 0; k < N; ++k) diag[k] = 0.0;

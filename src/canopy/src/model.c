@@ -66,6 +66,7 @@ static canopy_status reserve_nodes(canopy_model *m)
         !grow((void **)&n->added_dir, 3 * sizeof(double), old, cap) ||
         !grow((void **)&n->force_ext, 3 * sizeof(double), old, cap) ||
         !grow((void **)&n->acc, 3 * sizeof(double), old, cap) ||
+        !grow((void **)&n->guide, 3 * sizeof(double), old, cap) ||
         !grow((void **)&n->fixed, 1, old, cap) ||
         !grow((void **)&n->group, 1, old, cap)) {
         /* Arrays that grew keep the larger block; capacity stays the old one,
@@ -153,7 +154,7 @@ void canopy_model_destroy(canopy_model **model)
     canopy_model *m = *model;
     free(m->nodes.x); free(m->nodes.v); free(m->nodes.mass);
     free(m->nodes.added_mass); free(m->nodes.added_dir);
-    free(m->nodes.force_ext); free(m->nodes.acc);
+    free(m->nodes.force_ext); free(m->nodes.acc); free(m->nodes.guide);
     free(m->nodes.fixed); free(m->nodes.group);
     free(m->springs.ends); free(m->springs.rest); free(m->springs.rest_vec);
     free(m->springs.k); free(m->springs.c); free(m->springs.law);
@@ -210,6 +211,7 @@ canopy_status canopy_model_add_node(canopy_model *model, const double x[3],
     n->mass[i] = mass;
     n->added_mass[i] = 0.0;
     memset(n->added_dir + 3 * i, 0, 3 * sizeof(double));
+    memset(n->guide + 3 * i, 0, 3 * sizeof(double));
     n->fixed[i] = 0;
     n->group[i] = (unsigned char)group;
     topology_changed(model);
@@ -246,6 +248,52 @@ canopy_status canopy_model_set_fixed(canopy_model *model, int node, int fixed)
     model->nodes.fixed[node] = fixed ? 1 : 0;
     topology_changed(model);
     canopy_clear_message(model);
+    return CANOPY_OK;
+}
+
+canopy_status canopy_model_set_guide(canopy_model *model, int node,
+                                     const double axis[3])
+{
+    NULL_MODEL_CHECK(model);
+    canopy_status st = canopy_check_node(model, node, "set_guide");
+    if (st != CANOPY_OK) return st;
+    double e[3] = {0.0, 0.0, 0.0};
+    if (axis != NULL) {
+        if (!isfinite(axis[0]) || !isfinite(axis[1]) || !isfinite(axis[2]))
+            return canopy_fail(model, CANOPY_ERR_ARGUMENT,
+                               "set_guide: axis of node %d is not finite",
+                               node);
+        /* scaled first, so that 1e-300 or 1e300 components normalise */
+        const double big = fmax(fabs(axis[0]), fmax(fabs(axis[1]),
+                                                     fabs(axis[2])));
+        if (big > 0.0) {
+            const double u[3] = {axis[0] / big, axis[1] / big, axis[2] / big};
+            const double len = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+            for (int d = 0; d < 3; ++d) e[d] = u[d] / len;
+        }
+    }
+    canopy_nodes *n = &model->nodes;
+    memcpy(n->guide + 3 * node, e, 3 * sizeof(double));
+    /* on the wire from now on: no velocity or acceleration across it */
+    canopy_guide_project(model, node, n->v + 3 * node);
+    canopy_guide_project(model, node, n->acc + 3 * node);
+    topology_changed(model);
+    canopy_clear_message(model);
+    return CANOPY_OK;
+}
+
+canopy_status canopy_model_get_guide(const canopy_model *model, int node,
+                                     double axis[3])
+{
+    NULL_MODEL_CHECK(model);
+    if (axis == NULL)
+        return canopy_reject(model, CANOPY_ERR_ARGUMENT,
+                             "get_guide: axis is NULL");
+    if (node < 0 || node >= model->nodes.count)
+        return canopy_reject(model, CANOPY_ERR_RANGE,
+                             "get_guide: node %d is not in 0..%d", node,
+                             model->nodes.count - 1);
+    memcpy(axis, model->nodes.guide + 3 * node, 3 * sizeof(double));
     return CANOPY_OK;
 }
 
@@ -417,6 +465,18 @@ canopy_status canopy_model_prepare(canopy_model *model)
             (own_mass && !(n->mass[i] > 0.0)))
             return canopy_fail(model, CANOPY_ERR_STATE,
                                "node %d is free but has zero mass", i);
+    }
+    for (int i = 0; i < n->count; ++i) {
+        if (!canopy_guided(model, i)) continue;
+        if (n->fixed[i])
+            return canopy_fail(model, CANOPY_ERR_STATE,
+                               "node %d is both fixed and on a guide "
+                               "(set_guide)", i);
+        if (model->integrator == &canopy_integrator_kang)
+            return canopy_fail(model, CANOPY_ERR_STATE,
+                               "node %d is on a guide (set_guide), which "
+                               "needs an explicit integrator, newmark or "
+                               "hht, not 'kang'", i);
     }
     if (model->directional_added_mass &&
         model->integrator == &canopy_integrator_kang)

@@ -21,6 +21,8 @@ typedef struct canopy_nodes {
                            (0 0 0: it acts in every direction) */
     double *force_ext;  /* 3*count extra nodal forces */
     double *acc;        /* 3*count acceleration carried by HHT between steps */
+    double *guide;      /* 3*count unit direction of the wire a node slides
+                           on (canopy_model_set_guide); 0 0 0: none */
     unsigned char *fixed;
     unsigned char *group;
 } canopy_nodes;
@@ -263,6 +265,42 @@ static inline void canopy_inertia_solve(const canopy_model *m, int i,
     }
     const double inv = 1.0 / canopy_effective_mass(m, i);
     f[0] *= inv; f[1] *= inv; f[2] *= inv;
+}
+
+/* Whether node i slides on a guide (canopy_model_set_guide). */
+static inline int canopy_guided(const canopy_model *m, int i)
+{
+    const double *e = m->nodes.guide + 3 * i;
+    return e[0] != 0.0 || e[1] != 0.0 || e[2] != 0.0;
+}
+
+/* w <- e (e.w) at a guided node i (its component along the guide e);
+ * other nodes' w unchanged. */
+static inline void canopy_guide_project(const canopy_model *m, int i,
+                                        double *w)
+{
+    if (!canopy_guided(m, i)) return;
+    const double *e = m->nodes.guide + 3 * i;
+    const double s = e[0] * w[0] + e[1] * w[1] + e[2] * w[2];
+    w[0] = s * e[0]; w[1] = s * e[1]; w[2] = s * e[2];
+}
+
+/* f <- node i's acceleration under force f: M_i^-1 f for a free node; on
+ * a guide e the motion along it, e (e.f) / (e.M_i e) (the guide takes the
+ * rest of f). */
+static inline void canopy_node_acceleration(const canopy_model *m, int i,
+                                            double *f)
+{
+    if (!canopy_guided(m, i)) {
+        canopy_inertia_solve(m, i, f);
+        return;
+    }
+    const double *e = m->nodes.guide + 3 * i;
+    double me[3];
+    canopy_inertia_apply(m, i, e, me);
+    const double s = (e[0] * f[0] + e[1] * f[1] + e[2] * f[2]) /
+                     (e[0] * me[0] + e[1] * me[1] + e[2] * me[2]);
+    f[0] = s * e[0]; f[1] = s * e[1]; f[2] = s * e[2];
 }
 
 /* State copies. */
