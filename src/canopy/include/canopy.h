@@ -320,6 +320,8 @@ canopy_status canopy_model_set_positions(canopy_model *model, const double *x,
                                          int n);
 canopy_status canopy_model_get_velocities(const canopy_model *model, double *v,
                                           int n);
+/* A guided node (canopy_model_set_guide) keeps only the part of the
+ * velocity along its guide; so does its acceleration state below. */
 canopy_status canopy_model_set_velocities(canopy_model *model, const double *v,
                                           int n);
 /* Integrator state beyond (t, x, v): newmark and hht end each step with

@@ -603,7 +603,9 @@ canopy_status canopy_model_set_velocities(canopy_model *model, const double *v,
     NULL_MODEL_CHECK(model);
     canopy_status st = set_vectors(model, model->nodes.v, v, n,
                                    "set_velocities");
-    if (st == CANOPY_OK) model->acc_valid = 0;
+    if (st != CANOPY_OK) return st;
+    for (int i = 0; i < n; ++i) canopy_guide_project(model, i, model->nodes.v + 3 * i);
+    model->acc_valid = 0;
     return st;
 }
 
@@ -626,7 +628,9 @@ canopy_status canopy_model_set_acceleration_state(canopy_model *model,
     NULL_MODEL_CHECK(model);
     canopy_status st = set_vectors(model, model->nodes.acc, a, n,
                                    "set_acceleration_state");
-    if (st == CANOPY_OK) model->acc_valid = valid ? 1 : 0;
+    if (st != CANOPY_OK) return st;
+    for (int i = 0; i < n; ++i) canopy_guide_project(model, i, model->nodes.acc + 3 * i);
+    model->acc_valid = valid ? 1 : 0;
     return st;
 }
 

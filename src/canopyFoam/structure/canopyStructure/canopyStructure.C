@@ -15,6 +15,7 @@ License
 #include "canopyStructure.H"
 #include "Time.H"
 #include "IOdictionary.H"
+#include <fenv.h>
 #include "uniformDimensionedFields.H"
 #include "PstreamReduceOps.H"
 
@@ -125,19 +126,29 @@ Foam::canopyStructure::canopyStructure
     warnedTime_(false),
     initialVelocity_(Zero)
 {
-    const IOdictionary properties
-    (
-        IOobject
+    {
+        // A number beyond the double range (1e999) overflows in
+        // OpenFOAM's parser, which dies of SIGFPE with FOAM_SIGFPE's
+        // overflow trap on; with the trap off for the read the parser
+        // stops with an IO error at the entry's line instead
+        const int traps = fegetexcept();
+        fedisableexcept(FE_OVERFLOW);
+        const IOdictionary properties
         (
-            propertiesName,
-            runTime.constant(),
-            runTime,
-            IOobject::MUST_READ,
-            IOobject::NO_WRITE,
-            false               // not registered: the caller owns nothing
-        )
-    );
-    dict_ = properties;
+            IOobject
+            (
+                propertiesName,
+                runTime.constant(),
+                runTime,
+                IOobject::MUST_READ,
+                IOobject::NO_WRITE,
+                false               // not registered: the caller owns nothing
+            )
+        );
+        feclearexcept(FE_OVERFLOW);
+        feenableexcept(traps);
+        dict_ = properties;
+    }
 
     // Gravity default: constant/g (uniformDimensionedVectorField) if present
     vector g(0, 0, -9.81);

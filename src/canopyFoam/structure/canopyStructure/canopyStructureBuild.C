@@ -777,6 +777,25 @@ void Foam::canopyStructure::build(const vector& defaultGravity)
             << "lines (lines.number = 0 or no lines)" << endl;
     }
 
+    // ---- guide wire ----------------------------------------------------------
+
+    bool guidePayload = false;
+    bool guideApex = false;
+    vector guideDirection(Zero);
+    const dictionary* guideDict = top.optionalDict("guideWire");
+    if (guideDict)
+    {
+        const entryReader gr(*guideDict, "guideWire");
+        guidePayload = gr.getBool("payload", true);
+        guideApex = gr.getBool("apex", true);
+        guideDirection = gr.getVector("direction", Zero);
+        if (guidePayload && nLines == 0)
+        {
+            gr.fail("payload", "= true needs suspension lines and a payload");
+        }
+        gr.warnUnused(wordList{"payload", "apex", "direction"}, "");
+    }
+
     // ---- gravity, integrator, fixed nodes ------------------------------------
 
     const vector g = top.getVector("gravity", defaultGravity);
@@ -1032,6 +1051,11 @@ void Foam::canopyStructure::build(const vector& defaultGravity)
     );
     check(canopy_model_set_speed_limit(m, speedLimit), FUNCTION_NAME, "canopy_model_set_speed_limit");
 
+    if (guidePayload || guideApex)
+    {
+        setGuideWire(guidePayload, guideApex, guideDirection, g, centre);
+    }
+
     if (initialVelocity_ != vector::zero)
     {
         List<scalar> v(3*nNodes());
@@ -1056,6 +1080,88 @@ void Foam::canopyStructure::build(const vector& defaultGravity)
             << " triangles, " << nLines << " lines, integrator "
             << integratorName << endl;
     }
+}
+
+
+void Foam::canopyStructure::setGuideWire
+(
+    const bool payload,
+    const bool apex,
+    const vector& direction,
+    const vector& gravity,
+    const vector& centre
+)
+{
+    canopy_model* m = model();
+    const vector e = mag(direction) > 0 ? direction : gravity;
+    if (!(mag(e) > 0))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Entry 'guideWire.direction' is missing and gravity is zero:"
+            << " give the wire's direction" << exit(FatalIOError);
+    }
+    const double axis[3] = {e.x(), e.y(), e.z()};
+    if (payload)
+    {
+        check
+        (
+            canopy_model_set_guide(m, payloadNode_, axis),
+            FUNCTION_NAME, "canopy_model_set_guide"
+        );
+    }
+    label apexNode = -1;
+    if (apex)
+    {
+        // The cloth's node nearest the canopy's centre
+        const label n = nNodes();
+        List<double> x(3*n);
+        List<int> group(n);
+        check
+        (
+            canopy_model_get_positions(m, x.data(), n),
+            FUNCTION_NAME, "canopy_model_get_positions"
+        );
+        check
+        (
+            canopy_model_get_node_groups(m, group.data(), n),
+            FUNCTION_NAME, "canopy_model_get_node_groups"
+        );
+        scalar best = GREAT;
+        for (label i = 0; i < n; ++i)
+        {
+            if (group[i] != CANOPY_GROUP_FABRIC)
+            {
+                continue;
+            }
+            const scalar d = mag
+            (
+                vector(x[3*i], x[3*i + 1], x[3*i + 2]) - centre
+            );
+            if (d < best)
+            {
+                best = d;
+                apexNode = i;
+            }
+        }
+        if (apexNode < 0)
+        {
+            FatalIOErrorInFunction(dict_)
+                << "Entry 'guideWire.apex' = true: the canopy has no cloth"
+                << " node" << exit(FatalIOError);
+        }
+        check
+        (
+            canopy_model_set_guide(m, apexNode, axis),
+            FUNCTION_NAME, "canopy_model_set_guide"
+        );
+    }
+    Info<< "canopyStructure: guide wire along " << e/mag(e) << " through"
+        << (payload ? " the payload" : "") << (payload && apex ? " and" : "");
+    if (apex)
+    {
+        Info<< " the canopy's apex (node " << apexNode << ")";
+    }
+    Info<< endl;
 }
 
 
