@@ -699,7 +699,7 @@ static canopy_status act_by_hand(fuzz *f)
     const int n = canopy_model_node_count(f->m);
     canopy_status st;
     int kind = KIND_TOPOLOGY;
-    switch (rnd(f, 7)) {
+    switch (rnd(f, 8)) {
     case 0: {
         double x[3];
         pick_point(f, x);
@@ -739,6 +739,15 @@ static canopy_status act_by_hand(fuzz *f)
         st = canopy_model_add_triangle(f->m, pick_index(f, n), pick_index(f, n),
                                        pick_index(f, n), NULL);
         break;
+    case 6: {
+        double axis[3];
+        pick_point(f, axis);
+        if (!rnd(f, 8)) axis[0] = axis[1] = axis[2] = 0.0;
+        before_call(f, "set_guide", 0);
+        st = canopy_model_set_guide(f->m, pick_index(f, n),
+                                    rnd(f, 10) ? axis : NULL);
+        break;
+    }
     default:
         before_call(f, "set_payload_node", 0);
         st = canopy_model_set_payload_node(f->m, pick_index(f, n));
