@@ -6,6 +6,7 @@
 #include "addedMassStabiliser.H"
 #include "canopyStructure.H"
 #include "readChoice.H"
+#include "readEntry.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -24,7 +25,10 @@ Foam::addedMassStabiliser::addedMassStabiliser
     endOfStep_(false),
     isotropic_(false)
 {
-    const scalar density = couplingDict.getOrDefault<scalar>("addedMass", 0);
+    const scalar density = canopyEntry::number
+    (
+        couplingDict, "addedMass", "coupling.addedMass", 0
+    );
     if (!(density >= 0))
     {
         FatalIOErrorInFunction(couplingDict)

@@ -9,6 +9,7 @@
 #include "canopy.h"
 #include "switchToken.H"
 #include "readChoice.H"
+#include "readEntry.H"
 #include "addedMassStabiliser.H"
 #include "treeDataCell.H"
 #include "indexedOctree.H"
@@ -33,6 +34,14 @@ bool readSwitch
     if (!dict.found(key))
     {
         return deflt;
+    }
+    if (dict.isDict(key))
+    {
+        canopyEntry::fail
+        (
+            dict, key, "coupling." + key,
+            "must be a switch (true/false, on/off, yes/no)"
+        );
     }
     ITstream& is = dict.lookup(key);
     bool value = deflt;
@@ -320,11 +329,22 @@ void Foam::canopyCoupling::writeCouplingState() const
 
 void Foam::canopyCoupling::readFrame(const dictionary& dict)
 {
+    if (dict.found("frame") && !dict.isDict("frame"))
+    {
+        canopyEntry::fail
+        (
+            dict, "frame", "coupling.frame", "must be a sub-dictionary { type ..; }"
+        );
+    }
     const dictionary& frame = dict.subOrEmptyDict("frame");
     followPayload_ =
         readChoice(frame, "type", "coupling.frame.type", {"fixed", "payload"})
      == "payload";
-    wind_ = frame.getOrDefault<vector>("wind", Zero);
+    canopyEntry::reportUnknown
+    (
+        frame, "coupling.frame.", {"type", "inletPatches", "wind"}
+    );
+    wind_ = canopyEntry::vectorValue(frame, "wind", "coupling.frame.wind", Zero);
     if (!followPayload_)
     {
         return;
@@ -550,9 +570,39 @@ Foam::canopyCoupling::canopyCoupling
     // up only the points it holds (a deadlock otherwise)
     (void)mesh_.tetBasePtIs();
 
+    if
+    (
+        structure_.dict().found("coupling")
+     && !structure_.dict().isDict("coupling")
+    )
+    {
+        canopyEntry::fail
+        (
+            structure_.dict(), "coupling", "coupling",
+            "must be a sub-dictionary { scheme ..; ... }"
+        );
+    }
     const dictionary& dict = structure_.dict().subOrEmptyDict("coupling");
 
-    const word schemeName(dict.getOrDefault<word>("scheme", "strong"));
+    // Every entry this class and its parts read; any other is reported
+    canopyEntry::reportUnknown
+    (
+        dict, "coupling.",
+        {
+            "scheme", "rho", "kernel", "markerSpacing", "forcingIterations",
+            "tangential", "pressureOffset", "tolerance", "Uref",
+            "residualNorm", "acceleration", "initialRelaxation",
+            "maxRelaxation", "reuse", "filter", "restartFluid", "addedMass",
+            "addedMassPredictor", "addedMassBalance", "addedMassDirection",
+            "pressureJump", "tangentialLoad", "stopIfNotConverged",
+            "lineDrag", "U", "frame"
+        }
+    );
+
+    const word schemeName
+    (
+        canopyEntry::wordValue(dict, "scheme", "coupling.scheme", "strong")
+    );
     if (schemeName == "strong")
     {
         scheme_ = scheme::strong;
@@ -569,11 +619,15 @@ Foam::canopyCoupling::canopyCoupling
             << exit(FatalIOError);
     }
 
-    rho_ = dict.getOrDefault<scalar>("rho", 1.2);
-    forcingIterations_ = dict.getOrDefault<label>("forcingIterations", 2);
-    pressureOffset_ = dict.getOrDefault<scalar>("pressureOffset", 3);
-    tolerance_ = dict.getOrDefault<scalar>("tolerance", 1e-3);
-    Uref_ = dict.getOrDefault<scalar>("Uref", 1);
+    rho_ = canopyEntry::number(dict, "rho", "coupling.rho", 1.2);
+    forcingIterations_ = canopyEntry::integer
+    (
+        dict, "forcingIterations", "coupling.forcingIterations", 2
+    );
+    pressureOffset_ =
+        canopyEntry::number(dict, "pressureOffset", "coupling.pressureOffset", 3);
+    tolerance_ = canopyEntry::number(dict, "tolerance", "coupling.tolerance", 1e-3);
+    Uref_ = canopyEntry::number(dict, "Uref", "coupling.Uref", 1);
     rmsResidual_ =
         readChoice(dict, "residualNorm", "coupling.residualNorm", {"max", "rms"})
      == "rms";
@@ -624,12 +678,20 @@ Foam::canopyCoupling::canopyCoupling
     acceleration_ = interfaceAcceleration::New(dict);
     readFrame(dict);
 
-    kernel_ = deltaKernel::New(dict.getOrDefault<word>("kernel", "roma3"));
+    const word kernelName
+    (
+        canopyEntry::wordValue(dict, "kernel", "coupling.kernel", "roma3")
+    );
+    kernel_ = deltaKernel::New(kernelName);
 
     // Marker spacing: coupling.markerSpacing, else the local cell size
     // (the smallest cell's where a triangle is in no cell)
-    scalar spacing = Foam::cbrt(gMin(mesh.V().field()));
-    const bool uniformSpacing = dict.readIfPresent("markerSpacing", spacing);
+    const bool uniformSpacing = dict.found("markerSpacing");
+    const scalar spacing = canopyEntry::number
+    (
+        dict, "markerSpacing", "coupling.markerSpacing",
+        Foam::cbrt(gMin(mesh.V().field()))
+    );
     if (!(spacing > 0))
     {
         FatalIOErrorInFunction(dict)
@@ -675,9 +737,17 @@ Foam::canopyCoupling::canopyCoupling
     velocityStencil_.reset(new ibStencil(mesh, kernel_()));
     plusStencil_.reset(new ibStencil(mesh, kernel_()));
     minusStencil_.reset(new ibStencil(mesh, kernel_()));
-    UName_ = dict.getOrDefault<word>("U", "U");
+    UName_ = canopyEntry::wordValue(dict, "U", "coupling.U", "U");
     if (dict.found("lineDrag"))
     {
+        if (!dict.isDict("lineDrag"))
+        {
+            canopyEntry::fail
+            (
+                dict, "lineDrag", "coupling.lineDrag",
+                "must be a sub-dictionary { diameter ..; }"
+            );
+        }
         lineDrag_.reset
         (
             new lineDrag
@@ -735,7 +805,7 @@ Foam::canopyCoupling::canopyCoupling
         << markers_->size() << " markers on " << nt << " canopy triangles"
         << " (spacing " << (uniformSpacing ? "" : "local cell size, min ")
         << spacing << " m), kernel "
-        << dict.getOrDefault<word>("kernel", "roma3")
+        << kernelName
         << ", " << forcingIterations_ << " forcing iterations, "
         << (noSlip_ ? "noSlip" : "free");
     if (lineDrag_.valid())

@@ -7,6 +7,7 @@
 #include "aitkenRelaxation.H"
 #include "interfaceQuasiNewton.H"
 #include "error.H"
+#include "readEntry.H"
 
 // * * * * * * * * * * * * * * * * Selector  * * * * * * * * * * * * * * * * //
 
@@ -15,7 +16,10 @@ Foam::autoPtr<Foam::interfaceAcceleration> Foam::interfaceAcceleration::New
     const dictionary& dict
 )
 {
-    const word type(dict.getOrDefault<word>("acceleration", "aitken"));
+    const word type
+    (
+        canopyEntry::wordValue(dict, "acceleration", "coupling.acceleration", "aitken")
+    );
     if (type != "aitken" && type != "IQN-ILS")
     {
         FatalIOErrorInFunction(dict)
@@ -23,7 +27,10 @@ Foam::autoPtr<Foam::interfaceAcceleration> Foam::interfaceAcceleration::New
             << " is not valid; valid: aitken IQN-ILS" << exit(FatalIOError);
     }
 
-    const scalar omega0 = dict.getOrDefault<scalar>("initialRelaxation", 0.5);
+    const scalar omega0 = canopyEntry::number
+    (
+        dict, "initialRelaxation", "coupling.initialRelaxation", 0.5
+    );
     if (!(omega0 > 0) || omega0 > 1)
     {
         FatalIOErrorInFunction(dict)
@@ -33,7 +40,10 @@ Foam::autoPtr<Foam::interfaceAcceleration> Foam::interfaceAcceleration::New
 
     if (type == "aitken")
     {
-        const scalar omegaMax = dict.getOrDefault<scalar>("maxRelaxation", 1);
+        const scalar omegaMax = canopyEntry::number
+        (
+            dict, "maxRelaxation", "coupling.maxRelaxation", 1
+        );
         if (omegaMax > 1 || omegaMax < omega0)
         {
             FatalIOErrorInFunction(dict)
@@ -47,14 +57,16 @@ Foam::autoPtr<Foam::interfaceAcceleration> Foam::interfaceAcceleration::New
         );
     }
 
-    const label reuse = dict.getOrDefault<label>("reuse", 8);
+    const label reuse =
+        canopyEntry::integer(dict, "reuse", "coupling.reuse", 8);
     if (reuse < 0)
     {
         FatalIOErrorInFunction(dict)
             << "Entry 'coupling.reuse' = " << reuse << " must be >= 0"
             << exit(FatalIOError);
     }
-    const scalar filter = dict.getOrDefault<scalar>("filter", 1e-3);
+    const scalar filter =
+        canopyEntry::number(dict, "filter", "coupling.filter", 1e-3);
     if (!(filter > 0) || !(filter < 1))
     {
         FatalIOErrorInFunction(dict)

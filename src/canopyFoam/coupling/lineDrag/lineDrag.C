@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "lineDrag.H"
+#include "readEntry.H"
 #include "canopy.h"
 #include "mathematicalConstants.H"
 
@@ -18,18 +19,26 @@ Foam::lineDrag::lineDrag
 )
 :
     diameter_(0),
-    Cd_(dict.getOrDefault<scalar>("Cd", 1.1)),
-    Cf_(dict.getOrDefault<scalar>("Cf", 0)),
+    Cd_(canopyEntry::number(dict, "Cd", "coupling.lineDrag.Cd", 1.1)),
+    Cf_(canopyEntry::number(dict, "Cf", "coupling.lineDrag.Cf", 0)),
     stencil_(mesh, kernel)
 {
-    if (!dict.readIfPresent("diameter", diameter_))
+    canopyEntry::reportUnknown
+    (
+        dict, "coupling.lineDrag.", {"diameter", "Cd", "Cf", "spacing"}
+    );
+    diameter_ =
+        canopyEntry::number(dict, "diameter", "coupling.lineDrag.diameter", 0);
+    if (!dict.found("diameter"))
     {
         FatalIOErrorInFunction(dict)
             << "Entry 'coupling.lineDrag.diameter' is missing: the lines'"
             << " diameter [m]" << exit(FatalIOError);
     }
-    const scalar spacing =
-        dict.getOrDefault<scalar>("spacing", defaultSpacing);
+    const scalar spacing = canopyEntry::number
+    (
+        dict, "spacing", "coupling.lineDrag.spacing", defaultSpacing
+    );
     const struct { const char* name; scalar value; bool zeroOk; } checks[] =
     {
         {"diameter", diameter_, false},
