@@ -20,7 +20,7 @@ Description
     any check fails:
     - the same canopy built directly through the C API (canopy.h) from the
       same dictionary, read here with plain dictionary lookups, is
-      identical: node positions, masses, groups, fixed flags, springs (ends,
+      identical: node positions, masses, groups, fixed flags, guides, springs (ends,
       rest lengths, stiffnesses, groups), triangles, integrator, stable
       step, gravity energy and seepage velocity;
     - known totals: total mass = areal density x canopy area + linear
@@ -317,6 +317,7 @@ canopy_model* buildReference
         }
     }
 
+    int payloadNode = -1;
     if (nLines > 0)
     {
         canopy_lines_spec ls = canopy_lines_spec_default();
@@ -344,11 +345,50 @@ canopy_model* buildReference
         {
             canopy_model_set_fixed(m, pn, 1);
         }
+        payloadNode = pn;
     }
 
     const vector g = props.getOrDefault<vector>("gravity", gDefault);
     const double ga[3] = {g.x(), g.y(), g.z()};
     ok(m, canopy_model_set_gravity(m, ga), "canopy_model_set_gravity");
+
+    // guideWire: the payload and the cloth node nearest canopy.centre
+    // slide along the wire (default direction: gravity's)
+    const dictionary guide = props.subOrEmptyDict("guideWire");
+    if (props.found("guideWire"))
+    {
+        const vector dir = guide.getOrDefault<vector>("direction", g);
+        const double axis[3] = {dir.x(), dir.y(), dir.z()};
+        if (guide.getOrDefault<bool>("payload", true) && payloadNode >= 0)
+        {
+            ok(m, canopy_model_set_guide(m, payloadNode, axis),
+               "canopy_model_set_guide");
+        }
+        if (guide.getOrDefault<bool>("apex", true))
+        {
+            const vector c =
+                props.subDict("canopy").getOrDefault<vector>("centre", Zero);
+            const int n = canopy_model_node_count(m);
+            List<double> x(3*n);
+            List<int> group(n);
+            canopy_model_get_positions(m, x.data(), n);
+            canopy_model_get_node_groups(m, group.data(), n);
+            int apex = -1;
+            scalar best = GREAT;
+            for (int i = 0; i < n; ++i)
+            {
+                const scalar d =
+                    mag(vector(x[3*i], x[3*i + 1], x[3*i + 2]) - c);
+                if (group[i] == CANOPY_GROUP_FABRIC && d < best)
+                {
+                    best = d;
+                    apex = i;
+                }
+            }
+            ok(m, canopy_model_set_guide(m, apex, axis),
+               "canopy_model_set_guide");
+        }
+    }
     const dictionary por = fabricDict.subOrEmptyDict("porosity");
     ok
     (
@@ -500,6 +540,14 @@ void compareModels(const canopy_model* a, canopy_model* b)
     canopy_model_get_node_groups(a, ia.data(), n);
     canopy_model_get_node_groups(b, ib.data(), n);
     same(ia, ib, "node groups");
+
+    std::vector<double> guideA(3*n), guideB(3*n);
+    for (int i = 0; i < n; ++i)
+    {
+        canopy_model_get_guide(a, i, guideA.data() + 3*i);
+        canopy_model_get_guide(b, i, guideB.data() + 3*i);
+    }
+    same(guideA, guideB, "guides (guideWire)");
 
     std::vector<int> ea(2*ns), eb(2*ns);
     std::vector<double> ra(ns), rb(ns), ka(ns), kb(ns);
