@@ -725,3 +725,79 @@ CANOPY_TEST(output_errors)
     canopy_model_destroy(&m);
     remove_dir(dir);
 }
+
+/* canopy_output_write_framed: a step that also holds the positions in a
+ * moving frame has x_frame = x - origin exactly and the origin; the
+ * sidecar run-frame.xdmf shows exactly those steps with x_frame as their
+ * geometry (run.xdmf shows every step with x); without framed steps there
+ * is no run-frame.xdmf; APPEND rebuilds both from the file, and a
+ * non-finite origin is refused with a message and writes nothing. */
+CANOPY_TEST(output_moving_frame)
+{
+    char dir[64], path[128], h5[160], xdmf[160], frame[176];
+    ASSERT_TRUE(make_dir(dir, sizeof dir));
+    snprintf(path, sizeof path, "%s/run", dir);
+    snprintf(h5, sizeof h5, "%s.h5", path);
+    snprintf(xdmf, sizeof xdmf, "%s.xdmf", path);
+    snprintf(frame, sizeof frame, "%s-frame.xdmf", path);
+
+    canopy_model *m = NULL;
+    ASSERT_OK(m, canopy_model_create(&m));
+    ASSERT_OK(m, build_umbrella(m, 6));
+    const int n = canopy_model_node_count(m);
+    canopy_output *o = NULL;
+    ASSERT_OK(m, canopy_output_create(m, path, CANOPY_OUTPUT_CREATE, &o));
+    ASSERT_OK(m, canopy_output_write(o, m));            /* step 0: plain */
+    ASSERT_TRUE(file_exists(xdmf) && !file_exists(frame));
+    const double origin[3] = {0.25, -1.5, 75.125};
+    ASSERT_OK(m, canopy_model_step(m, 1e-3));
+    ASSERT_OK(m, canopy_output_write_framed(o, m, origin)); /* step 1 */
+    ASSERT_OK(m, canopy_model_step(m, 1e-3));
+    ASSERT_OK(m, canopy_output_write_framed(o, m, origin)); /* step 2 */
+    const double bad[3] = {0.0, NAN, 0.0};
+    ASSERT_STATUS(CANOPY_ERR_ARGUMENT, canopy_output_write_framed(o, m, bad));
+    ASSERT_TRUE(strstr(canopy_output_message(o), "origin") != NULL);
+    ASSERT_TRUE(canopy_output_step_count(o) == 3);
+    printf("run.xdmf: %d grids, %d x; run-frame.xdmf: %d grids, %d x_frame\n",
+           count_in_file(xdmf, "<Grid Name=\"step_"),
+           count_in_file(xdmf, "/x</DataItem>"),
+           count_in_file(frame, "<Grid Name=\"step_"),
+           count_in_file(frame, "/x_frame</DataItem>"));
+    ASSERT_TRUE(count_in_file(xdmf, "<Grid Name=\"step_") == 3);
+    ASSERT_TRUE(count_in_file(xdmf, "/x</DataItem>") == 3);
+    ASSERT_TRUE(count_in_file(frame, "<Grid Name=\"step_") == 2);
+    ASSERT_TRUE(count_in_file(frame, "/x_frame</DataItem>") == 2);
+    ASSERT_TRUE(count_in_file(frame, "step_000000") == 0);
+    canopy_output_destroy(&o);
+
+    double x[3 * MAX_NODES], xf[3 * MAX_NODES], org[3];
+    hid_t file = H5Fopen(h5, H5F_ACC_RDONLY, H5P_DEFAULT);
+    ASSERT_TRUE(file >= 0);
+    ASSERT_TRUE(read_all(file, "/steps/000002/x", H5T_NATIVE_DOUBLE, x,
+                         3 * MAX_NODES) == 3 * n);
+    ASSERT_TRUE(read_all(file, "/steps/000002/x_frame", H5T_NATIVE_DOUBLE, xf,
+                         3 * MAX_NODES) == 3 * n);
+    ASSERT_TRUE(read_all(file, "/steps/000002/frame_origin",
+                         H5T_NATIVE_DOUBLE, org, 3) == 3);
+    int exact = 1;
+    for (int k = 0; k < 3 * n; ++k) exact &= xf[k] == x[k] - origin[k % 3];
+    ASSERT_TRUE(exact);
+    ASSERT_TRUE(org[0] == origin[0] && org[1] == origin[1] &&
+                org[2] == origin[2]);
+    ASSERT_TRUE(H5Lexists(file, "/steps/000000/x_frame", H5P_DEFAULT) == 0);
+    H5Fclose(file);
+
+    /* APPEND from the file alone: both sidecars are rebuilt */
+    remove(frame);
+    ASSERT_OK(m, canopy_output_create(m, path, CANOPY_OUTPUT_APPEND, &o));
+    ASSERT_TRUE(count_in_file(frame, "/x_frame</DataItem>") == 2);
+    ASSERT_TRUE(count_in_file(xdmf, "/x</DataItem>") == 3);
+    canopy_output_destroy(&o);
+    /* a new file without framed steps removes the old frame sidecar */
+    ASSERT_OK(m, canopy_output_create(m, path, CANOPY_OUTPUT_CREATE, &o));
+    ASSERT_OK(m, canopy_output_write(o, m));
+    ASSERT_TRUE(!file_exists(frame));
+    canopy_output_destroy(&o);
+    canopy_model_destroy(&m);
+    remove_dir(dir);
+}

@@ -585,11 +585,14 @@ size_t canopy_model_memory_bytes(const canopy_model *model);
  *   /steps/NNNNNN        attributes time, acc_valid; datasets x, v, f_ext,
  *                        acc (n x 3), dp (nt), tension (ns), cell_dp,
  *                        cell_tension (per XDMF cell; a triangle's tension
- *                        is the mean of its edge springs')
+ *                        is the mean of its edge springs'); written by
+ *                        canopy_output_write_framed also x_frame (n x 3)
+ *                        and frame_origin (3)
  * The .xdmf is a temporal collection, one grid per step, the topology
  * written once and referenced; it is (re)written through a temporary file
  * and rename() after every step, so a killed run still opens. It appears
- * with the first step (an empty collection would not open). */
+ * with the first step (an empty collection would not open). path-frame.xdmf
+ * is the same over the steps that hold x_frame, with that geometry. */
 typedef struct canopy_output canopy_output;
 typedef enum canopy_output_mode {
     CANOPY_OUTPUT_CREATE = 0, /* new file (replaces an existing one) */
@@ -609,6 +612,15 @@ canopy_status canopy_output_create(canopy_model *model, const char *path,
 /* Append the model's current state as a new step. */
 canopy_status canopy_output_write(canopy_output *output,
                                   const canopy_model *model);
+/* The same, and the step also holds the positions seen from a moving frame
+ * (a mesh that follows the payload) whose origin is `origin` (in the
+ * model's frame) at the step's time: datasets x_frame (n x 3, x - origin)
+ * and frame_origin (3). The sidecar path-frame.xdmf shows the steps that
+ * hold them, with x_frame as their geometry: the canopy where the moving
+ * frame's fields are. */
+canopy_status canopy_output_write_framed(canopy_output *output,
+                                         const canopy_model *model,
+                                         const double origin[3]);
 int canopy_output_step_count(const canopy_output *output);
 const char *canopy_output_message(const canopy_output *output);
 void canopy_output_destroy(canopy_output **output);

@@ -17,6 +17,8 @@ struct canopy_output {
     hid_t file;
     char *h5_path;            /* path.h5 */
     char *xdmf_path;          /* path.xdmf */
+    char *frame_xdmf_path;    /* path-frame.xdmf: the steps in a moving frame */
+    double *x_frame;          /* 3*nodes: positions less the frame's origin */
     const char *h5_name;      /* basename of h5_path, as the sidecar names it */
     int nodes, springs, triangles, lines;
     int *line_spring;         /* lines: the spring of each line cell */
@@ -203,6 +205,12 @@ canopy_status canopy_h5_list_steps(hid_t file, const char *file_name,
         }
         steps[n].number = number;
         steps[n].time = t;
+        steps[n].framed = 0;
+        {
+            char frame[96];
+            snprintf(frame, sizeof frame, "%s/x_frame", name);
+            steps[n].framed = H5Lexists(group, frame, H5P_DEFAULT) > 0;
+        }
         ++n;
     }
     if (n > 1) qsort(steps, (size_t)n, sizeof *steps, compare_steps);
@@ -484,6 +492,8 @@ static void output_free(canopy_output *o)
     if (o->file >= 0) H5Fclose(o->file);
     free(o->h5_path);
     free(o->xdmf_path);
+    free(o->frame_xdmf_path);
+    free(o->x_frame);
     free(o->line_spring);
     free(o->edge_spring);
     free(o->tension);
@@ -493,6 +503,10 @@ static void output_free(canopy_output *o)
     free(o);
 }
 
+/* The sidecars of the given steps: path.xdmf with every step, and
+ * path-frame.xdmf with the steps that hold positions in a moving frame
+ * (none: no such file). The moving frame's first, so that a failure leaves
+ * path.xdmf as it was. */
 static canopy_status rewrite_xdmf(canopy_output *o,
                                   const canopy_output_step *steps, int count)
 {
@@ -500,8 +514,25 @@ static canopy_status rewrite_xdmf(canopy_output *o,
     mesh.nodes = o->nodes;
     mesh.cells = o->triangles + o->lines;
     mesh.cells_length = 4L * o->triangles + 4L * o->lines;
-    return canopy_xdmf_write(o->xdmf_path, o->h5_name, &mesh, steps, count,
-                             o->message, sizeof o->message);
+    int framed = 0;
+    for (int s = 0; s < count; ++s) framed += steps[s].framed != 0;
+    canopy_output_step *sub = NULL;
+    if (framed > 0) {
+        sub = malloc(sizeof *sub * (size_t)framed);
+        if (sub == NULL)
+            return out_fail(o, CANOPY_ERR_MEMORY, "no memory for %s of '%s'",
+                            "the moving frame's step list");
+        int k = 0;
+        for (int s = 0; s < count; ++s)
+            if (steps[s].framed) sub[k++] = steps[s];
+    }
+    canopy_status st = canopy_xdmf_write(o->frame_xdmf_path, o->h5_name,
+                                         "x_frame", &mesh, sub, framed,
+                                         o->message, sizeof o->message);
+    free(sub);
+    if (st != CANOPY_OK) return st;
+    return canopy_xdmf_write(o->xdmf_path, o->h5_name, "x", &mesh, steps,
+                             count, o->message, sizeof o->message);
 }
 
 static int time_is_later(double t, double reference)
@@ -705,7 +736,10 @@ static canopy_status create_impl(canopy_model *m, const char *path,
     o->lines = count_lines(m);
     o->h5_path = canopy_path_with_ext(path, CANOPY_H5_EXT);
     o->xdmf_path = canopy_path_with_ext(path, CANOPY_XDMF_EXT);
+    o->frame_xdmf_path = canopy_path_with_ext(path, CANOPY_FRAME_XDMF_EXT);
+    o->x_frame = malloc(3 * sizeof(double) * (size_t)(o->nodes > 0 ? o->nodes : 1));
     if (o->h5_path == NULL || o->xdmf_path == NULL ||
+        o->frame_xdmf_path == NULL || o->x_frame == NULL ||
         build_maps(o, m) != CANOPY_OK) {
         output_free(o);
         return canopy_fail(m, CANOPY_ERR_MEMORY, "output_create '%s': no "
@@ -802,7 +836,8 @@ static void cell_fields(canopy_output *o, const canopy_model *m)
     }
 }
 
-static canopy_status write_impl(canopy_output *o, const canopy_model *m)
+static canopy_status write_impl(canopy_output *o, const canopy_model *m,
+                                const double *origin)
 {
     if (o->step_count == o->step_capacity) {
         const int cap = o->step_capacity > 0 ? 2 * o->step_capacity : 64;
@@ -848,6 +883,15 @@ static canopy_status write_impl(canopy_output *o, const canopy_model *m)
         failed = "cell_dp";
     else if (write_dataset(g, "cell_tension", 0, cells, 0,
                            o->cell_tension) < 0) failed = "cell_tension";
+    if (!failed && origin != NULL) {
+        for (int i = 0; i < o->nodes; ++i)
+            for (int d = 0; d < 3; ++d)
+                o->x_frame[3 * i + d] = m->nodes.x[3 * i + d] - origin[d];
+        if (write_dataset(g, "x_frame", 0, n, 3, o->x_frame) < 0)
+            failed = "x_frame";
+        else if (write_dataset(g, "frame_origin", 0, 3, 0, origin) < 0)
+            failed = "frame_origin";
+    }
     if (H5Gclose(g) < 0 && !failed) failed = "(closing the group)";
     if (!failed && H5Fflush(o->file, H5F_SCOPE_LOCAL) < 0)
         failed = "(flushing the file)";
@@ -861,6 +905,7 @@ static canopy_status write_impl(canopy_output *o, const canopy_model *m)
     }
     o->steps[o->step_count].number = o->next_number;
     o->steps[o->step_count].time = m->t;
+    o->steps[o->step_count].framed = origin != NULL;
     canopy_status st = rewrite_xdmf(o, o->steps, o->step_count + 1);
     if (st != CANOPY_OK) {
         /* Keep the handle and the files as they were before the call. */
@@ -873,8 +918,9 @@ static canopy_status write_impl(canopy_output *o, const canopy_model *m)
     return CANOPY_OK;
 }
 
-canopy_status canopy_output_write(canopy_output *output,
-                                  const canopy_model *model)
+static canopy_status output_write(canopy_output *output,
+                                  const canopy_model *model,
+                                  const double *origin)
 {
     if (output == NULL) return CANOPY_ERR_ARGUMENT;
     if (model == NULL)
@@ -898,10 +944,31 @@ canopy_status canopy_output_write(canopy_output *output,
                                      what, want);
     canopy_status st;
     H5E_BEGIN_TRY {
-        st = write_impl(output, model);
+        st = write_impl(output, model, origin);
     } H5E_END_TRY;
     if (st == CANOPY_OK) output->message[0] = '\0';
     return st;
+}
+
+canopy_status canopy_output_write(canopy_output *output,
+                                  const canopy_model *model)
+{
+    return output_write(output, model, NULL);
+}
+
+canopy_status canopy_output_write_framed(canopy_output *output,
+                                         const canopy_model *model,
+                                         const double origin[3])
+{
+    if (output == NULL) return CANOPY_ERR_ARGUMENT;
+    if (origin == NULL || !isfinite(origin[0]) || !isfinite(origin[1]) ||
+        !isfinite(origin[2]))
+        return canopy_format_message(output->message, sizeof output->message,
+                                     CANOPY_ERR_ARGUMENT,
+                                     "output_write_framed '%s': the frame's "
+                                     "origin is NULL or not finite",
+                                     output->h5_path);
+    return output_write(output, model, origin);
 }
 
 int canopy_output_step_count(const canopy_output *output)

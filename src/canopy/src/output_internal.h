@@ -11,13 +11,16 @@
  * number zero-padded to six digits (more digits past 999999). */
 #define CANOPY_H5_EXT        ".h5"
 #define CANOPY_XDMF_EXT      ".xdmf"
+#define CANOPY_FRAME_XDMF_EXT "-frame.xdmf"
 #define CANOPY_STEP_NAME_FMT "%06d"
 #define CANOPY_STEP_NAME_SIZE 16
 
-/* One output step: its number (the NNNNNN of its group) and its time. */
+/* One output step: its number (the NNNNNN of its group), its time, and
+ * whether it holds the positions in a moving frame (x_frame). */
 typedef struct canopy_output_step {
     int number;
     double time;
+    int framed;
 } canopy_output_step;
 
 /* What the XDMF text needs to know about the mesh. */
@@ -69,12 +72,15 @@ canopy_status canopy_h5_check_counts(const canopy_h5_counts *file_counts,
                                      size_t msg_size);
 
 /* Write the XDMF sidecar `xdmf_path` for the given steps of the HDF5 file
- * whose name relative to the sidecar is `h5_name`: written to
+ * whose name relative to the sidecar is `h5_name`, the geometry from each
+ * step's dataset `geometry` ("x", or "x_frame" for the moving frame's
+ * sidecar): written to
  * xdmf_path + ".tmp", then renamed over xdmf_path. With no steps, an old
  * sidecar is removed instead (an empty collection crashes ParaView's legacy
  * reader). On failure the old sidecar is untouched, the temporary removed,
  * and CANOPY_ERR_IO returned with a message in msg. */
 canopy_status canopy_xdmf_write(const char *xdmf_path, const char *h5_name,
+                                const char *geometry,
                                 const canopy_xdmf_mesh *mesh,
                                 const canopy_output_step *steps, int count,
                                 char *msg, size_t msg_size);

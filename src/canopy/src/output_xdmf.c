@@ -51,8 +51,8 @@ static void attribute(FILE *f, const char *name, const char *type,
 }
 
 static void write_grid(FILE *f, const canopy_xdmf_mesh *mesh,
-                       const char *h5_name, const canopy_output_step *step,
-                       int first)
+                       const char *h5_name, const char *geometry,
+                       const canopy_output_step *step, int first)
 {
     char name[CANOPY_STEP_NAME_SIZE], path[64], nodes1[32], nodes3[32],
         cells1[32], cells_len[32], time_text[32];
@@ -80,7 +80,7 @@ static void write_grid(FILE *f, const canopy_xdmf_mesh *mesh,
                    FIRST_GRID "/Topology)\"/>\n");
     }
     fprintf(f, "        <Geometry GeometryType=\"XYZ\">\n");
-    snprintf(path, sizeof path, "/steps/%s/x", name);
+    snprintf(path, sizeof path, "/steps/%s/%s", name, geometry);
     heavy(f, "          ", nodes3, "Float", 8, h5_name, path);
     fprintf(f, "        </Geometry>\n");
 
@@ -114,6 +114,7 @@ static void write_grid(FILE *f, const canopy_xdmf_mesh *mesh,
 }
 
 canopy_status canopy_xdmf_write(const char *xdmf_path, const char *h5_name,
+                                const char *geometry,
                                 const canopy_xdmf_mesh *mesh,
                                 const canopy_output_step *steps, int count,
                                 char *msg, size_t msg_size)
@@ -154,7 +155,7 @@ canopy_status canopy_xdmf_write(const char *xdmf_path, const char *h5_name,
             "    <Grid Name=\"canopy\" GridType=\"Collection\" "
             "CollectionType=\"Temporal\">\n");
     for (int s = 0; s < count; ++s)
-        write_grid(f, mesh, h5_name, &steps[s], s == 0);
+        write_grid(f, mesh, h5_name, geometry, &steps[s], s == 0);
     fprintf(f, "    </Grid>\n  </Domain>\n</Xdmf>\n");
 
     int failed = ferror(f) != 0;
