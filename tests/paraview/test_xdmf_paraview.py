@@ -7,8 +7,11 @@ h5dump (hdf5-tools; pvpython has no h5py), opens the .xdmf with ParaView's
 Xdmf3 reader (the one File > Open picks) and with its legacy XDMF reader,
 and checks: points, cells (triangles and 2-node lines), time steps and their
 values, the geometry of the last step, and the arrays velocity, cell_dp and
-cell_tension. Renders one screenshot to prove the data draws. Exits non-zero
-with a message on any mismatch; the temporary directory is kept then.
+cell_tension. Renders one screenshot to prove the data draws. Then the
+same with -f (each step also written in the frame that follows the
+payload): both readers open drop-frame.xdmf with every step, and the last
+step's bounds are those of x - frame_origin. Exits non-zero with a message
+on any mismatch; the temporary directory is kept then.
 """
 
 import os
@@ -209,6 +212,28 @@ def main():
     legacy = simple.XDMFReader(FileNames=[xdmf])
     check_reader("XDMFReader", legacy, nodes, triangles, lines, steps, x)
     screenshot(reader, os.path.join(tmp, "drop.png"))
+
+    # The moving frame (-f: the frame follows the payload): drop-frame.xdmf
+    # shows every step at x - origin, the payload at the origin
+    framed = os.path.join(tmp, "framed")
+    run([demo, "-o", framed, "-t", "0.05", "-h", "0.25", "-w", "0.01", "-q",
+         "-f"])
+    fh5, fxdmf = framed + ".h5", os.path.abspath(framed + "-frame.xdmf")
+    if not os.path.isfile(fxdmf):
+        die("the demo with -f wrote no %s" % fxdmf)
+    nodes, triangles, lines, steps, x = expected_from_h5(fh5)
+    origin = [float(v) for v in re.findall(
+        r'\(\d+\):\s*([-+0-9.eEinfa]+)',
+        h5dump("-d", "/steps/%06d/frame_origin" % steps[-1][0], fh5))]
+    check(len(origin) == 3, "no frame_origin in the last step of %s" % fh5)
+    print("frame origin at the last step: %s" % origin)
+    check(origin[2] < -1.0, "the frame's origin %s is not at the payload "
+          "(about 1.7 m below the skirt)" % origin)
+    moved = [v - origin[k % 3] for k, v in enumerate(x)]
+    for label, r in (("Xdmf3ReaderS (frame)", simple.Xdmf3ReaderS(
+            FileName=[fxdmf])), ("XDMFReader (frame)", simple.XDMFReader(
+                FileNames=[fxdmf]))):
+        check_reader(label, r, nodes, triangles, lines, steps, moved)
 
     if failures:
         print("FAIL: %d mismatch(es); files kept in %s" % (len(failures), tmp))

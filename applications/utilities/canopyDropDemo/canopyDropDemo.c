@@ -40,13 +40,14 @@ typedef struct options {
     double edge_length;
     double write_interval;
     int quiet;
+    int frame;
 } options;
 
 static void usage(FILE *f)
 {
     fprintf(f,
         "Usage: canopyDropDemo [-o outputPrefix] [-t endTime] [-h edgeLength]"
-        " [-w writeInterval] [-q]\n"
+        " [-w writeInterval] [-f] [-q]\n"
         "Structure-only drop of a 7 ft flat circular parachute (2.134 m, 16 "
         "lines of 2 m,\n"
         "5.398 kg payload) under a quasi-steady pressure stand-in for the "
@@ -60,6 +61,10 @@ static void usage(FILE *f)
         "  -w writeInterval  simulated time between outputs [s] (default "
         "0.01),\n"
         "                    rounded to whole steps of %g s\n"
+        "  -f                also write each step in the frame that follows "
+        "the payload\n"
+        "                    (<prefix>-frame.xdmf: the payload at the "
+        "origin)\n"
         "  -q                quiet: no progress lines, only the summary\n",
         OUTER_STEP);
 }
@@ -85,10 +90,15 @@ static int parse_options(int argc, char **argv, options *o)
     o->edge_length = 0.1;
     o->write_interval = 0.01;
     o->quiet = 0;
+    o->frame = 0;
     for (int i = 1; i < argc; ++i) {
         const char *a = argv[i];
         if (strcmp(a, "-q") == 0) {
             o->quiet = 1;
+            continue;
+        }
+        if (strcmp(a, "-f") == 0) {
+            o->frame = 1;
             continue;
         }
         if (strcmp(a, "--help") == 0 || strcmp(a, "-help") == 0) {
@@ -253,6 +263,17 @@ static void format_duration(char *buf, size_t size, double s)
                   fmod(s, 60.0));
 }
 
+/* One output step; with frame, also in the frame that follows the payload
+ * (origin at the payload node). */
+static canopy_status write_step(canopy_output *out, const canopy_model *m,
+                                int frame)
+{
+    if (!frame) return canopy_output_write(out, m);
+    double origin[3];
+    canopy_status st = canopy_model_payload_state(m, origin, NULL);
+    return st != CANOPY_OK ? st : canopy_output_write_framed(out, m, origin);
+}
+
 int main(int argc, char **argv)
 {
     options opt;
@@ -308,7 +329,7 @@ int main(int argc, char **argv)
         demo_free(&d);
         return rc;
     }
-    if ((st = canopy_output_write(d.output, m)) != CANOPY_OK) {
+    if ((st = write_step(d.output, m, opt.frame)) != CANOPY_OK) {
         int rc = fail("writing the output", canopy_output_message(d.output));
         demo_free(&d);
         return rc;
@@ -328,7 +349,7 @@ int main(int argc, char **argv)
             return 1;
         }
         if (s % write_every == 0 || s == steps) {
-            if ((st = canopy_output_write(d.output, m)) != CANOPY_OK) {
+            if ((st = write_step(d.output, m, opt.frame)) != CANOPY_OK) {
                 int rc = fail("writing the output",
                               canopy_output_message(d.output));
                 demo_free(&d);

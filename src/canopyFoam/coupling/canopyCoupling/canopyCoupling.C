@@ -1297,7 +1297,15 @@ void Foam::canopyCoupling::writeStructure()
 {
     {
         sectionTimer timer(structureSeconds_);
-        structure_.write(mesh_.time());
+        if (followPayload_)
+        {
+            // also in the mesh's frame: canopy-frame.xdmf beside case.foam
+            structure_.write(mesh_.time(), frameOrigin_);
+        }
+        else
+        {
+            structure_.write(mesh_.time());
+        }
         writeCouplingState();
     }
     Info<< "canopyCoupling: wall time since the run started: structure "

@@ -597,6 +597,26 @@ Foam::fileName Foam::canopyStructure::outputPath(const Time& runTime)
 
 bool Foam::canopyStructure::write(const Time& runTime)
 {
+    return writeStep(runTime, nullptr);
+}
+
+
+bool Foam::canopyStructure::write
+(
+    const Time& runTime,
+    const vector& frameOrigin
+)
+{
+    return writeStep(runTime, &frameOrigin);
+}
+
+
+bool Foam::canopyStructure::writeStep
+(
+    const Time& runTime,
+    const vector* frameOrigin
+)
+{
     const scalar t = time();
 
     if (!warnedTime_ && mag(t - runTime.value()) > timeTolerance(runTime))
@@ -632,7 +652,16 @@ bool Foam::canopyStructure::write(const Time& runTime)
             FatalErrorInFunction
                 << message.c_str() << nl << exit(FatalError);
         }
-        if (canopy_output_write(output_.get(), model_.get()) != CANOPY_OK)
+        const double origin[3] =
+        {
+            frameOrigin ? frameOrigin->x() : 0,
+            frameOrigin ? frameOrigin->y() : 0,
+            frameOrigin ? frameOrigin->z() : 0
+        };
+        const canopy_status st = frameOrigin
+          ? canopy_output_write_framed(output_.get(), model_.get(), origin)
+          : canopy_output_write(output_.get(), model_.get());
+        if (st != CANOPY_OK)
         {
             FatalErrorInFunction
                 << "libcanopy cannot write the step at time " << t << " to "
