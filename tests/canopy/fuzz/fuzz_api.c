@@ -230,7 +230,7 @@ typedef struct fuzz {
     int ckpt_known;
     snapshot ckpt;
     snapshot before, after;
-    file_image file_before[2], file_after[2];
+    file_image file_before[3], file_after[3];
 } fuzz;
 
 static fuzz *active; /* for the sanitizers' death callback */
@@ -518,9 +518,9 @@ enum {
 };
 
 /* Called before and after every call under test. files: the number of
- * output files (0..2, paths in f->file_path) the call must leave alone if
+ * output files (0..3, paths in f->file_path) the call must leave alone if
  * it is rejected. */
-static char file_path[2][420];
+static char file_path[3][420];
 
 static void before_call(fuzz *f, const char *action, int files)
 {
@@ -1151,19 +1151,29 @@ static void act_files(fuzz *f)
             break;
         }
         ++f->c->calls;
-        f->action = "output_write";
+        /* the ground frame only, or a moving frame's too (its origin
+         * sometimes NULL or not finite) */
+        const int framed = rnd(f, 2);
+        double origin[3];
+        pick_point(f, origin);
+        if (framed && !rnd(f, 10)) origin[rnd(f, 3)] = rnd(f, 2) ? NAN : INFINITY;
+        f->action = framed ? "output_write_framed" : "output_write";
         /* Sentinel on the output handle: output_write with a NULL model. */
         if (canopy_output_write(f->out, NULL) != CANOPY_ERR_ARGUMENT)
             violation(f, "output_write(NULL model) was not rejected", NULL);
         snapshot_take(f->m, &f->before);
         path_of(f, f->out_stem, ".h5", file_path[0], sizeof file_path[0]);
         path_of(f, f->out_stem, ".xdmf", file_path[1], sizeof file_path[1]);
-        for (int i = 0; i < 2; ++i)
+        path_of(f, f->out_stem, "-frame.xdmf", file_path[2],
+                sizeof file_path[2]);
+        for (int i = 0; i < 3; ++i)
             file_image_take(file_path[i], &f->file_before[i]);
         const int steps = canopy_output_step_count(f->out);
         check_quiet(f);
         const long ids0 = hdf5_ids();
-        st = canopy_output_write(f->out, f->m);
+        st = !framed ? canopy_output_write(f->out, f->m)
+           : canopy_output_write_framed(f->out, f->m,
+                                        rnd(f, 20) ? origin : NULL);
         check_quiet(f);
         check_hdf5_ids(f);
         if (hdf5_ids() != ids0)
@@ -1177,7 +1187,7 @@ static void act_files(fuzz *f)
             if (canopy_output_step_count(f->out) != steps)
                 violation(f, "a rejected output_write changed the step count",
                           NULL);
-            for (int i = 0; i < 2; ++i) {
+            for (int i = 0; i < 3; ++i) {
                 file_image_take(file_path[i], &f->file_after[i]);
                 if (!file_image_same(&f->file_before[i], &f->file_after[i]))
                     violation(f, "a rejected output_write changed the file",
