@@ -41,6 +41,7 @@ Usage
 #include "interfaceQuasiNewton.H"
 #include "aitkenRelaxation.H"
 #include "IStringStream.H"
+#include "OStringStream.H"
 
 using namespace Foam;
 
@@ -214,8 +215,43 @@ int main(int argc, char *argv[])
         );
     }
 
+    // 5. A failed time step (discardStep): the state written afterwards
+    //    (the last good state) is the one the step started from
+    {
+        interfaceQuasiNewton iqn(0.1, 8, 1e-3);
+        scalarField x(n, Zero);
+        solve(iqn, P, x, 4*n, tol);             // a first, completed step
+        iqn.reset();
+        dictionary atStart;
+        iqn.writeState(atStart);
+        linearProblem Ps(P);
+        forAll(Ps.xStar, i)
+        {
+            Ps.xStar[i] += 0.2*Foam::cos(0.3*i);
+        }
+        solve(iqn, Ps, x, 3, tol);              // a step cut short
+        dictionary cutShort, discarded;
+        iqn.writeState(cutShort);
+        iqn.discardStep();
+        iqn.writeState(discarded);
+        const auto columns = [](const dictionary& d)
+        {
+            return List<List<scalarField>>(d.lookup("quasiNewtonV")).size();
+        };
+        OStringStream a, b;
+        a << atStart;
+        b << discarded;
+        check
+        (
+            a.str() == b.str() && columns(cutShort) > columns(atStart),
+            "IQN-ILS after a failed step writes the step's start state ("
+          + std::to_string(columns(discarded)) + " past steps' columns; "
+          + std::to_string(columns(cutShort)) + " with the cut-short step's)"
+        );
+    }
+
     Info<< nl << (failures ? "FAILED: " : "PASSED: ") << failures
-        << " of 4 checks failed" << endl;
+        << " of 5 checks failed" << endl;
     return failures ? 1 : 0;
 }
 

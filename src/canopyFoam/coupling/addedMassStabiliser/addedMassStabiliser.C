@@ -99,6 +99,7 @@ void Foam::addedMassStabiliser::beginStep(canopyStructure& structure)
     {
         balanceAcceleration_ = Zero;
     }
+    stepStartBalance_ = balanceAcceleration_;
 
     // The added mass acts along the nodes' normals at the step's start
     // (area-weighted over the adjacent triangles), or with

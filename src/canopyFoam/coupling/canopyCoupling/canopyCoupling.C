@@ -425,6 +425,10 @@ void Foam::canopyCoupling::placeMarkers()
 
 void Foam::canopyCoupling::returnToStepStart()
 {
+    // A failed step: every part back to the step's start (the last good
+    // state written next is then the state the step started from)
+    addedMass_->returnToStepStart();
+    acceleration_->discardStep();
     structure_.restore();
     placeMarkers();
     updateStencils();

@@ -188,6 +188,15 @@ void Foam::interfaceQuasiNewton::relax
 }
 
 
+void Foam::interfaceQuasiNewton::discardStep()
+{
+    V_.clear();
+    W_.clear();
+    previousResidual_.clear();
+    previousOutput_.clear();
+}
+
+
 void Foam::interfaceQuasiNewton::writeState(dictionary& dict) const
 {
     // The past steps' columns as the next reset() leaves them: this step's
