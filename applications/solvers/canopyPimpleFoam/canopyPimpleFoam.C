@@ -121,15 +121,18 @@ int main(int argc, char *argv[])
                 #include "pEqn.H"
             }
 
+            // The coupling decides whether this outer iteration is the
+            // last; the turbulence model (corrected on the final iteration
+            // only, by default) is corrected after it has
+            if (coupling.correctStructure(p))
+            {
+                pimple.stopAfterThisIteration();
+            }
+
             if (pimple.turbCorr())
             {
                 laminarTransport.correct();
                 turbulence->correct();
-            }
-
-            if (coupling.correctStructure(p))
-            {
-                pimple.stopAfterThisIteration();
             }
         }
 
