@@ -1636,7 +1636,12 @@ def write_report():
                    "(div(phi,U) Gauss LUST grad(U): 75 % central, 25 % "
                    "linear upwind); 7ft-LES adds the WALE model "
                    "(simulationType LES). Judge their differences "
-                   "against the resolution study's GCI.", ""]
+                   "against the resolution study's GCI. Until commit "
+                   "0d82517 canopyPimpleFoam corrected the turbulence "
+                   "model only when nOuterCorrectors ran out, never on the "
+                   "outer iteration where the coupling converged, so an "
+                   "LES run kept nut = 0 and equalled 7ft-LUST to every "
+                   "digit; 7ft-LES is from after that fix.", ""]
         if name in ("domain7ft", "freeDomain7ft"):
             wide = sorted(
                 [(float(dict((e[1], e[2]) for e in run.edits).get(
