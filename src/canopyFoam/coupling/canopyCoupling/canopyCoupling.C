@@ -1301,15 +1301,9 @@ void Foam::canopyCoupling::writeStructure()
 {
     {
         sectionTimer timer(structureSeconds_);
-        if (followPayload_)
-        {
-            // also in the mesh's frame: canopy-frame.xdmf beside case.foam
-            structure_.write(mesh_.time(), frameOrigin_);
-        }
-        else
-        {
-            structure_.write(mesh_.time());
-        }
+        // with a mesh that follows the payload, also in the mesh's frame
+        // (canopy-frame.xdmf beside case.foam)
+        structure_.write(mesh_.time(), followPayload_ ? &frameOrigin_ : nullptr);
         writeCouplingState();
     }
     Info<< "canopyCoupling: wall time since the run started: structure "

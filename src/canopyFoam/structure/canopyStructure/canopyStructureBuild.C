@@ -789,6 +789,10 @@ void Foam::canopyStructure::build(const vector& defaultGravity)
         guidePayload = gr.getBool("payload", true);
         guideApex = gr.getBool("apex", true);
         guideDirection = gr.getVector("direction", Zero);
+        if (gr.found("direction") && !(mag(guideDirection) > 0))
+        {
+            gr.fail("direction", "must be a non-zero vector");
+        }
         if (guidePayload && nLines == 0)
         {
             gr.fail("payload", "= true needs suspension lines and a payload");
@@ -1114,13 +1118,8 @@ void Foam::canopyStructure::setGuideWire
     {
         // The cloth's node nearest the canopy's centre
         const label n = nNodes();
-        List<double> x(3*n);
+        const pointField x(points());
         List<int> group(n);
-        check
-        (
-            canopy_model_get_positions(m, x.data(), n),
-            FUNCTION_NAME, "canopy_model_get_positions"
-        );
         check
         (
             canopy_model_get_node_groups(m, group.data(), n),
@@ -1133,10 +1132,7 @@ void Foam::canopyStructure::setGuideWire
             {
                 continue;
             }
-            const scalar d = mag
-            (
-                vector(x[3*i], x[3*i + 1], x[3*i + 2]) - centre
-            );
+            const scalar d = mag(x[i] - centre);
             if (d < best)
             {
                 best = d;

@@ -595,23 +595,7 @@ Foam::fileName Foam::canopyStructure::outputPath(const Time& runTime)
 }
 
 
-bool Foam::canopyStructure::write(const Time& runTime)
-{
-    return writeStep(runTime, nullptr);
-}
-
-
 bool Foam::canopyStructure::write
-(
-    const Time& runTime,
-    const vector& frameOrigin
-)
-{
-    return writeStep(runTime, &frameOrigin);
-}
-
-
-bool Foam::canopyStructure::writeStep
 (
     const Time& runTime,
     const vector* frameOrigin
