@@ -1195,6 +1195,14 @@ def fabric_edge_cells(run):
     return float(m.group(1))
 
 
+# The breathing peaks of three levels are one mode, and so have a GCI,
+# when they lie within this factor of each other; a larger spread is
+# different motions (e.g. the canopy's breathing on one level, a
+# cell-scale vibration of the cloth on another) whose "order" means
+# nothing, and the table lists them without a GCI.
+BREATHING_SAME_MODE = 2.0
+
+
 def resolution_estimates(results, fineness=None):
     """Roache's GCI of descent speed, C_D0, C_Dp, Dp/D0 (and the breathing
     frequency, where every level resolves it) from the three finest
@@ -1202,8 +1210,9 @@ def resolution_estimates(results, fineness=None):
     resolution, larger finer (default cells across D0; the GCI takes the
     sizes 1/fineness). Returns (runs, table): runs [(fineness, run)]
     finest first, table {quantity: (values finest first, gci.gci's
-    dict)}; runs has fewer than three entries and table is empty when the
-    study is not complete enough."""
+    dict, or None for breathing peaks too far apart to be one mode,
+    BREATHING_SAME_MODE)}; runs has fewer than three entries and table is
+    empty when the study is not complete enough."""
     from . import gci as gci_mod
     fineness = fineness or cells_per_diameter
     done = []
@@ -1228,15 +1237,20 @@ def resolution_estimates(results, fineness=None):
                 "C_Dp = C_D0 (D0/Dp)^2": cd0 * (d0 / dp) ** 2,
                 "Dp/D0": dp / d0}
     values = [quantities(a) for _, _, a in done]
+    breathing = None
     if all(a["breathing"].get("resolved") for _, _, a in done):
-        for v, (_, _, a) in zip(values, done):
-            v["breathing frequency [Hz]"] = a["breathing"]["frequency"]
+        breathing = [a["breathing"]["frequency"] for _, _, a in done]
+        if max(breathing) <= BREATHING_SAME_MODE * min(breathing):
+            for v, b in zip(values, breathing):
+                v["breathing frequency [Hz]"] = b
     table = {}
     for key in values[0]:
         f = [v[key] for v in values]
         # formal order 1: the IB's regularised delta function is first
         # order at the interface (Lai & Peskin 2000, J. Comput. Phys. 160)
         table[key] = (f, gci_mod.gci(h, f, p_formal=1.0, p_max=3.0))
+    if breathing is not None and "breathing frequency [Hz]" not in values[0]:
+        table["breathing frequency [Hz]"] = (breathing, None)
     return [(n, r) for n, r, _ in done], table
 
 
@@ -1258,6 +1272,12 @@ def gci_lines(results, fineness=None, unit="cells across D0"):
              "order | extrapolated | GCI of the finest |",
              "|---|---|---|---|---|---|"]
     for key, (f, out) in table.items():
+        if out is None:
+            lines.append("| %s | %s | different modes (spread over a "
+                         "factor %g): no GCI | — | — | — |" % (
+                             key, ", ".join("%.4g" % x for x in f),
+                             BREATHING_SAME_MODE))
+            continue
         lines.append("| %s | %s | %s | %s | %.4g | %.1f %% (Fs %.3g) |" % (
             key, ", ".join("%.4g" % x for x in f), out["kind"],
             "—" if out["order"] is None else "%.2f" % out["order"],
@@ -1311,7 +1331,7 @@ def converged(study):
     return {key: {"finest": f[0], "extrapolated": out["extrapolated"],
                   "gci": out["gci"], "kind": out["kind"],
                   "runs": [r.ident for _, r in done]}
-            for key, (f, out) in table.items()}
+            for key, (f, out) in table.items() if out is not None}
 
 
 def plot_study(name, title, runs_results, reference_lines=()):

@@ -10,7 +10,9 @@ and the extrapolation f0 to the fixed-point iteration's convergence
 where q(p) != 0 and a formula that ignores it misses p by ~0.1. The GCI
 is then Fs |f1 - f2|/|f1| / (r21^p - 1) with Fs = 1.25 (Celik eq. 7).
 Oscillatory and divergent triples fall back to Fs = 3 with the formal
-order; equal cell sizes are refused.
+order; equal cell sizes are refused. validation.resolution_estimates
+gives the breathing frequency a GCI only when the three levels' peaks
+are one mode (within validation.BREATHING_SAME_MODE of each other).
 """
 
 import math
@@ -22,7 +24,7 @@ ROOT = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, os.path.join(ROOT, "python"))
 sys.path.insert(0, HERE)
 
-from canopyfoam import gci  # noqa: E402
+from canopyfoam import gci, validation  # noqa: E402
 import test_report as shared  # noqa: E402
 
 
@@ -73,9 +75,43 @@ def test_fallbacks():
     shared.check("equal cell sizes are refused", refused, refused)
 
 
+def fake_record(breathing_hz, descent=5.0):
+    """A complete run's record holding what resolution_estimates reads."""
+    return {"complete": True, "analysis": {
+        "parameters": {"nominalDiameter": {"value": 2.0}},
+        "dragCoefficient": {"weightBalance": 0.8},
+        "projectedDiameter": {"mean": 1.8},
+        "descentVelocity": {"mean": descent},
+        "breathing": {"resolved": breathing_hz is not None,
+                      "frequency": breathing_hz}}}
+
+
+def test_breathing_modes():
+    key = "breathing frequency [Hz]"
+    levels = (12, 18, 27)
+    one = [(n, fake_record(b)) for n, b in zip(levels, (1.4, 1.6, 1.7))]
+    _, table = validation.resolution_estimates(one, fineness=lambda n: n)
+    shared.check("breathing of one mode has a GCI",
+                 key in table and table[key][1] is not None,
+                 table.get(key))
+    two = [(n, fake_record(b)) for n, b in zip(levels, (25.0, 1.6, 1.4))]
+    _, table = validation.resolution_estimates(two, fineness=lambda n: n)
+    shared.check("breathing peaks 1.4/1.6/25 Hz: listed, no GCI",
+                 key in table and table[key][1] is None
+                 and table[key][0] == [1.4, 1.6, 25.0]
+                 and table["Dp/D0"][1] is not None, table.get(key))
+    unresolved = [(n, fake_record(b))
+                  for n, b in zip(levels, (1.4, None, 1.7))]
+    _, table = validation.resolution_estimates(unresolved,
+                                               fineness=lambda n: n)
+    shared.check("a level without a breathing peak: no breathing row",
+                 key not in table, sorted(table))
+
+
 def main():
     test_orders()
     test_fallbacks()
+    test_breathing_modes()
     if shared.failures:
         print("FAIL: %d check(s) failed: %s" % (len(shared.failures),
                                                ", ".join(shared.failures)))
