@@ -1219,6 +1219,26 @@ HANDBOOK_FLAT_CIRCULAR = (
     "viscosity, 5 kg/m² cloth and a 1.9 D0 periodic box, 3.9 m/s: 1.62), "
     "beyond any flat circular canopy in these sources.")
 
+# The T-10's published figures, and the C_D0 they imply at the rated 163 kg
+# (C_D0 = 2 m g / (rho V^2 S0), rho = 1.2 kg/m^3, S0 = pi 10.7^2 / 4)
+HANDBOOK_T10 = (
+    "Published T-10 figures: nominal diameter 35 ft (10.7 m), 30 lines of "
+    "25.5 ft (7.8 m), inflated diameter 25.7 ft (7.8 m, Dp/D0 = 0.73), "
+    "average descent 22 ft/s (6.7 m/s) with at most 360 lb (163 kg) "
+    "suspended (Mills Manufacturing, T-10 series characteristics, "
+    "millsmanufacturing.com); 19–23 ft/s depending on the jumper's weight "
+    "and the air's density (globalsecurity.org, \"T-10 Parachute\"); 22–24 "
+    "ft/s (en.wikipedia.org, \"T-10 parachute\"). None gives the weight or "
+    "altitude at which the rates were measured. At 163 kg and sea-level "
+    "density, 6.7 m/s means C_D0 = %.2f and 7.3 m/s %.2f; a lighter jumper "
+    "at the same rates, or thinner air, means less.")
+
+
+def t10_handbook_cd0(mass=163.0, rho=1.2, g=9.81, d0=10.7):
+    """C_D0 at 6.7 and 7.3 m/s for the T-10 at mass (HANDBOOK_T10)."""
+    s0 = math.pi * d0 ** 2 / 4
+    return tuple(2 * mass * g / (rho * v * v * s0) for v in (6.7, 7.3))
+
 
 def fabric_edge_cells(run):
     """The fabric's edge in finest cells of a run on the 7 ft tutorial
@@ -1703,6 +1723,14 @@ def write_report():
                    "outer iteration where the coupling converged, so an "
                    "LES run kept nut = 0 and equalled 7ft-LUST to every "
                    "digit; 7ft-LES is from after that fix.", ""]
+        if name in ("domainT10", "resolutionT10"):
+            md += [HANDBOOK_T10 % t10_handbook_cd0(), "",
+                   "The T-10 runs start from the tutorial's pre-inflated "
+                   "parabolic shape at rest and run to 50 s: in the "
+                   "tutorial's 20 s run at 163 kg the descent still grew "
+                   "from 5.4 to 5.9 m/s over 13–20 s as the wake lengthened "
+                   "(D0/V ≈ 1.8 s), so the statistics are read over "
+                   "30–50 s.", ""]
         if name in ("domain7ft", "freeDomain7ft", "domainT10"):
             wide = sorted(
                 [(float(dict((e[1], e[2]) for e in run.edits).get(
