@@ -83,6 +83,9 @@ QUANTITIES = {
 #   breathingFrequencySimulation     [lo, hi] the seed's simulation [Hz]
 #   breathingPeriodExperiment        measured breathing period [s]
 #   breathingPeriodSimulation        the seed's simulated period [s]
+#   convergedStudy                   the validation study (bin/canopy-
+#                                    validate) whose committed runs give
+#                                    this tutorial's converged C_D0
 REFERENCES = {
     "7ft": {
         "title": "7 ft flat circular canopy, D0 2.134 m, 16 lines, payload "
@@ -93,6 +96,7 @@ REFERENCES = {
         "descentVelocitySimulationSpread": 0.05,
         "breathingFrequencyDropTest": 2.0,
         "breathingFrequencySimulation": [1.6, 2.0],
+        "convergedStudy": "resolution7ft",
     },
     "T10": {
         "title": "T-10 parabolic canopy with apex vent, D0 10.7 m, 30 lines "
@@ -737,6 +741,21 @@ def _reference_breathing(ref):
     return ", ".join(parts)
 
 
+def _converged_line(study, cd0):
+    """This run's C_D0 against the converged value of a resolution study
+    (the finest level of its committed runs, with its GCI), or None when
+    the study has too few complete runs."""
+    from . import validation
+    try:
+        conv = validation.converged(study)["C_D0 (weight)"]
+    except (SystemExit, KeyError, OSError, ValueError):
+        return None
+    return ("     converged C_D0 %.3g +- %.1f %% (GCI; %s, study %s); this "
+            "run's C_D0 differs by %+.0f %%" % (
+                conv["finest"], 100 * conv["gci"], conv["runs"][0], study,
+                100 * (cd0 / conv["finest"] - 1)))
+
+
 def format_summary(r):
     """The one-screen summary of a report dict."""
     p = r["parameters"]
@@ -819,6 +838,10 @@ def format_summary(r):
         add("  C_D force    %.4g  = mean pressure force against gravity "
             "%.4g N / (q S0)" % (cd["pressureForce"],
                                  r["pressureForceAgainstGravity"]["mean"]))
+    if ref and ref.get("convergedStudy") and cd["weightBalance"] is not None:
+        line = _converged_line(ref["convergedStudy"], cd["weightBalance"])
+        if line:
+            add(line)
     if ref and abs(D0 - ref["nominalDiameter"]) > \
             1e-3 * ref["nominalDiameter"]:
         add("  NOTE         the reference is for D0 = %.4g m; this case has "

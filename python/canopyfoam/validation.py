@@ -986,6 +986,7 @@ def execute(run, ranks, resume=False):
                                                    run.case_dir))
     else:
         prepare(run)
+    record_code_version(run.case_dir, resume)
     cmd = [os.path.join(run.case_dir, "Allrun"), "-np", str(ranks)]
     cmd += run.options + (["-continue"] if resume else [])
     start = time.time()
@@ -1012,8 +1013,6 @@ def execute(run, ranks, resume=False):
                 pass
     record_wall()
     wall = earlier + time.time() - start
-    with open(os.path.join(run.case_dir, "validation-code-version"), "w") as f:
-        f.write(code_version() + "\n")
     print("canopy-validate: %s %s after %.0f s" % (
         run.ident, "done" if status == 0 else "FAILED (status %d)" % status,
         wall), flush=True)
@@ -1055,6 +1054,22 @@ def code_version():
     out = subprocess.run(["git", "-C", TOP, "describe", "--always",
                           "--dirty"], capture_output=True, text=True)
     return out.stdout.strip() if out.returncode == 0 else "unknown"
+
+
+def record_code_version(case_dir, resume):
+    """Write the code version a run starts with; a continued run keeps
+    the versions it ran with before and adds this one when it differs
+    ('a, continued with b')."""
+    path = os.path.join(case_dir, "validation-code-version")
+    version = code_version()
+    if resume:
+        before = run_code_version(case_dir)
+        if before != "unrecorded":
+            if before.split(", continued with ")[-1] == version:
+                return
+            version = "%s, continued with %s" % (before, version)
+    with open(path, "w") as f:
+        f.write(version + "\n")
 
 
 def run_code_version(case_dir):
