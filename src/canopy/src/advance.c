@@ -13,9 +13,9 @@ canopy_status canopy_model_frequency_bound(canopy_model *model, double *omega)
     if (st != CANOPY_OK) return st;
     const canopy_nodes *n = &model->nodes;
     const canopy_springs *s = &model->springs;
-    /* Per-node sums of stiffness and dashpot, in work[0] (x: K, y: C; z: the
-     * hinge dashpots' row sums of C, bending.c). */
-    double *sum = model->work[0];
+    /* Per-node sums of stiffness and dashpot (x: K, y: C; z: the hinge
+     * dashpots' row sums of C, bending.c). */
+    double *sum = canopy_vectors_at(&model->bound_sums, 0);
     for (int i = 0; i < 3 * n->count; ++i) sum[i] = 0.0;
     for (int k = 0; k < s->count; ++k) {
         const int i = s->ends[2 * k], j = s->ends[2 * k + 1];
@@ -71,7 +71,7 @@ static int find_runaway(const canopy_model *m, double *speed)
 /* One step without rollback (the caller saved the state). */
 static canopy_status raw_step(canopy_model *model, double dt, int substep)
 {
-    canopy_status st = model->integrator->step(model, dt);
+    canopy_status st = model->integrator->step(model->stepper.state, model, dt);
     if (st != CANOPY_OK) return st;
     if (!model->integrator->carries_acceleration) model->acc_valid = 0;
     /* The hinge dashpots' split update changes v only; the integrator's

@@ -122,6 +122,59 @@ static double dot(int N, const double *a, const double *b)
     return s;
 }
 
+/* The update's own workspace: six node vectors of scratch (the increment
+ * d, CG's residual, preconditioned residual, direction and (M + h C) p,
+ * and the diagonal). */
+struct canopy_hinge_solver {
+    canopy_vectors store;
+    double *inc, *r, *z, *p, *Ap, *diag;
+};
+
+static canopy_hinge_solver *solver_create(int nodes)
+{
+    canopy_hinge_solver *s =
+        canopy_vectors_state_alloc(sizeof *s, 6, nodes, NULL);
+    if (s == NULL) return NULL;
+    s->inc = canopy_vectors_at(&s->store, 0);
+    s->r = canopy_vectors_at(&s->store, 1);
+    s->z = canopy_vectors_at(&s->store, 2);
+    s->p = canopy_vectors_at(&s->store, 3);
+    s->Ap = canopy_vectors_at(&s->store, 4);
+    s->diag = canopy_vectors_at(&s->store, 5);
+    return s;
+}
+
+canopy_status canopy_hinge_solver_prepare(canopy_model *m)
+{
+    if (!m->bending_implicit || m->hinges.count == 0) {
+        canopy_hinge_solver_destroy(&m->hinge_solver);
+        return CANOPY_OK;
+    }
+    const int nodes = m->nodes.count;
+    if (m->hinge_solver != NULL && m->hinge_solver->store.nodes == nodes)
+        return CANOPY_OK;
+    canopy_hinge_solver *s = solver_create(nodes);
+    if (s == NULL)
+        return canopy_fail(m, CANOPY_ERR_MEMORY,
+                           "cannot allocate the implicit hinge dashpots' "
+                           "workspace for %d nodes", nodes);
+    canopy_hinge_solver_destroy(&m->hinge_solver);
+    m->hinge_solver = s;
+    return CANOPY_OK;
+}
+
+void canopy_hinge_solver_destroy(canopy_hinge_solver **solver)
+{
+    if (solver == NULL) return;
+    canopy_vectors_state_free(*solver);
+    *solver = NULL;
+}
+
+size_t canopy_hinge_solver_bytes(const canopy_hinge_solver *solver)
+{
+    return solver ? sizeof *solver + canopy_vectors_bytes(&solver->store) : 0;
+}
+
 void canopy_hinge_damping_implicit_forces(canopy_model *m, double *f)
 {
     cache_modes(m, m->nodes.x);
@@ -132,8 +185,9 @@ canopy_status canopy_hinge_damping_implicit_update(canopy_model *m, double h)
 {
     const int N = 3 * m->nodes.count;
     double *v = m->nodes.v;
-    double *inc = m->work[10], *r = m->work[11], *z = m->work[12],
-           *p = m->work[13], *Ap = m->work[14], *diag = m->work[15];
+    const canopy_hinge_solver *s = m->hinge_solver;
+    double *inc = s->inc, *r = s->r, *z = s->z, *p = s->p, *Ap = s->Ap,
+           *diag = s->diag;
     cache_modes(m, m->nodes.x);
 
     /* r = b = -h (C v) on free rows; fixed rows stay 0 throughout */

@@ -8,12 +8,31 @@
  *   dv_i  = (F_i dt + dt^2 sum_j k_ij dv0_j) / (m_i + dt^2 S_i)   (eq. 55)
  *   v_{n+1} = v_n + dv,  x_{n+1} = x_n + dt v_{n+1}               (eqs. 56-57)
  * i.e. one Jacobi sweep of backward Euler's linear system. */
-static canopy_status step(canopy_model *m, double dt)
+typedef struct kang_state {
+    canopy_vectors store;
+    double *F;          /* forces at (x_n, v_n) */
+    double *S;          /* per-node stiffness sums (n of its 3n doubles) */
+    double *dv0, *sum;  /* the Jacobi guess; sum_j k_ij dv0_j */
+} kang_state;
+
+static void *alloc(int nodes, size_t *bytes)
+{
+    kang_state *s = canopy_vectors_state_alloc(sizeof *s, 4, nodes, bytes);
+    if (s != NULL) {
+        s->F = canopy_vectors_at(&s->store, 0);
+        s->S = canopy_vectors_at(&s->store, 1);
+        s->dv0 = canopy_vectors_at(&s->store, 2);
+        s->sum = canopy_vectors_at(&s->store, 3);
+    }
+    return s;
+}
+
+static canopy_status step(void *state, canopy_model *m, double dt)
 {
     const int n = m->nodes.count;
+    const kang_state *st = state;
     double *x = m->nodes.x, *v = m->nodes.v;
-    double *F = m->work[0], *S = m->work[1], *dv0 = m->work[2],
-           *sum = m->work[3];
+    double *F = st->F, *S = st->S, *dv0 = st->dv0, *sum = st->sum;
     canopy_forces(m, x, v, F);
     for (int i = 0; i < n; ++i) S[i] = 0.0;
     for (int s = 0; s < m->springs.count; ++s) {
@@ -49,4 +68,5 @@ static canopy_status step(canopy_model *m, double dt)
     return CANOPY_OK;
 }
 
-const canopy_integrator canopy_integrator_kang = {"kang", 1, 1, 0, step};
+const canopy_integrator canopy_integrator_kang = {
+    "kang", 1, 1, 0, alloc, step, canopy_vectors_state_free};

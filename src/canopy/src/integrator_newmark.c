@@ -22,6 +22,33 @@ typedef struct hht_coeffs {
     double alpha, beta, gamma, dt;
 } hht_coeffs;
 
+/* The conjugate-gradient solver's vectors: residual, direction, J p, the
+ * preconditioned residual and the tangent's scratch. */
+typedef struct cg_vectors {
+    double *r, *p, *Ap, *z, *tmp;
+} cg_vectors;
+
+/* Newmark's and HHT's own state, 15 node vectors of scratch (the carried
+ * acceleration is model state, nodes.acc): the step's known a_n and F_n;
+ * the trial x1, v1, a1, their forces F1 and residual R; the displacement dx,
+ * the Newton correction delta and the Jacobi diagonal; the CG vectors. */
+typedef struct hht_workspace {
+    canopy_vectors store;
+    double *an, *Fn, *x1, *v1, *a1, *F1, *R, *dx, *delta, *diag;
+    cg_vectors cg;
+} hht_workspace;
+
+static void *hht_alloc(int nodes, size_t *bytes)
+{
+    hht_workspace *w = canopy_vectors_state_alloc(sizeof *w, 15, nodes, bytes);
+    if (w == NULL) return NULL;
+    double **slot[15] = {&w->an, &w->Fn,    &w->x1,   &w->v1,   &w->a1,
+                         &w->F1, &w->R,     &w->dx,   &w->delta, &w->diag,
+                         &w->cg.r, &w->cg.p, &w->cg.Ap, &w->cg.z, &w->cg.tmp};
+    for (int k = 0; k < 15; ++k) *slot[k] = canopy_vectors_at(&w->store, k);
+    return w;
+}
+
 static double dot_free(const canopy_model *m, const double *a, const double *b)
 {
     double s = 0.0;
@@ -68,13 +95,12 @@ static void precondition(const canopy_model *m, const double *r,
 
 /* Solve J delta = rhs by preconditioned CG to relative tolerance rtol.
  * Returns the iterations used, or -1 if not converged. */
-static int cg_solve(canopy_model *m, const hht_coeffs *c, const double *x,
-                    const double *v, const double *rhs, double *delta,
-                    const double *diag, double rtol)
+static int cg_solve(canopy_model *m, const hht_coeffs *c, const cg_vectors *cg,
+                    const double *x, const double *v, const double *rhs,
+                    double *delta, const double *diag, double rtol)
 {
     const int N = 3 * m->nodes.count;
-    double *r = m->work[8], *p = m->work[9], *Ap = m->work[10],
-           *z = m->work[11], *tmp = m->work[12];
+    double *r = cg->r, *p = cg->p, *Ap = cg->Ap, *z = cg->z, *tmp = cg->tmp;
     precondition(m, rhs, diag, z);
     for (int k = 0; k < N; ++k) {
         delta[k] = 0.0;
@@ -150,16 +176,16 @@ static double hht_residual(const canopy_model *m, const hht_coeffs *c,
     return sqrt(dot_free(m, s->R, s->R));
 }
 
-static canopy_status hht_step(canopy_model *m, double dt, double alpha)
+static canopy_status hht_step(hht_workspace *ws, canopy_model *m, double dt,
+                              double alpha)
 {
     const int n = m->nodes.count, N = 3 * n;
     const hht_coeffs c = {alpha, 0.25 * (1.0 - alpha) * (1.0 - alpha),
                           0.5 - alpha, dt};
     const double *x0 = m->nodes.x, *v0 = m->nodes.v;
-    double *an = m->work[0], *Fn = m->work[1], *F1 = m->work[2],
-           *a1 = m->work[3], *v1 = m->work[4], *x1 = m->work[5],
-           *R = m->work[6], *delta = m->work[7], *diag = m->work[13],
-           *dx = m->work[14];
+    double *an = ws->an, *Fn = ws->Fn, *F1 = ws->F1, *a1 = ws->a1,
+           *v1 = ws->v1, *x1 = ws->x1, *R = ws->R, *delta = ws->delta,
+           *diag = ws->diag, *dx = ws->dx;
 
     /* a_n: HHT's own acceleration from its previous step (it satisfies the
      * HHT equation of that step, not M a = F(x_n, v_n); recomputing it would
@@ -221,7 +247,7 @@ static canopy_status hht_step(canopy_model *m, double dt, double alpha)
         }
         if (it == m->implicit_max_iter) break;
         for (int k = 0; k < N; ++k) R[k] = -R[k];
-        if (cg_solve(m, &c, x1, v1, R, delta, diag, 1e-6) < 0)
+        if (cg_solve(m, &c, &ws->cg, x1, v1, R, delta, diag, 1e-6) < 0)
             return canopy_fail(m, CANOPY_ERR_NOT_CONVERGED,
                                "%s: conjugate gradients did not converge "
                                "(dt %g, Newton iteration %d)",
@@ -254,17 +280,17 @@ static canopy_status hht_step(canopy_model *m, double dt, double alpha)
                        dt, scale > 0.0 ? res / scale : res, m->implicit_tol);
 }
 
-static canopy_status newmark_step(canopy_model *m, double dt)
+static canopy_status newmark_step(void *state, canopy_model *m, double dt)
 {
-    return hht_step(m, dt, 0.0);
+    return hht_step(state, m, dt, 0.0);
 }
 
-static canopy_status hht_alpha_step(canopy_model *m, double dt)
+static canopy_status hht_alpha_step(void *state, canopy_model *m, double dt)
 {
-    return hht_step(m, dt, m->hht_alpha);
+    return hht_step(state, m, dt, m->hht_alpha);
 }
 
-const canopy_integrator canopy_integrator_newmark = {"newmark", 2, 1, 0,
-                                                     newmark_step};
-const canopy_integrator canopy_integrator_hht = {"hht", 2, 1, 1,
-                                                 hht_alpha_step};
+const canopy_integrator canopy_integrator_newmark = {
+    "newmark", 2, 1, 0, hht_alloc, newmark_step, canopy_vectors_state_free};
+const canopy_integrator canopy_integrator_hht = {
+    "hht", 2, 1, 1, hht_alloc, hht_alpha_step, canopy_vectors_state_free};

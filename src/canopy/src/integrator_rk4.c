@@ -1,12 +1,31 @@
 /* integrator_rk4.c — classic fourth-order Runge–Kutta (seed 000 ch. 4, seed 002 eqs. 42–51). */
 #include "integrator.h"
 
-static canopy_status step(canopy_model *m, double dt)
+typedef struct rk4_state {
+    canopy_vectors store;
+    double *xs, *vs, *a;   /* the stage's state and acceleration */
+    double *sx, *sv;       /* weighted slope sums */
+} rk4_state;
+
+static void *alloc(int nodes, size_t *bytes)
+{
+    rk4_state *s = canopy_vectors_state_alloc(sizeof *s, 5, nodes, bytes);
+    if (s != NULL) {
+        s->xs = canopy_vectors_at(&s->store, 0);
+        s->vs = canopy_vectors_at(&s->store, 1);
+        s->a = canopy_vectors_at(&s->store, 2);
+        s->sx = canopy_vectors_at(&s->store, 3);
+        s->sv = canopy_vectors_at(&s->store, 4);
+    }
+    return s;
+}
+
+static canopy_status step(void *state, canopy_model *m, double dt)
 {
     const int n = m->nodes.count, N = 3 * n;
+    const rk4_state *s = state;
     double *x = m->nodes.x, *v = m->nodes.v;
-    double *xs = m->work[0], *vs = m->work[1], *a = m->work[2];
-    double *sx = m->work[3], *sv = m->work[4];   /* weighted slope sums */
+    double *xs = s->xs, *vs = s->vs, *a = s->a, *sx = s->sx, *sv = s->sv;
 
     canopy_accelerations(m, x, v, a);            /* K1 = (v, a) */
     for (int i = 0; i < N; ++i) {
@@ -39,4 +58,5 @@ static canopy_status step(canopy_model *m, double dt)
     return CANOPY_OK;
 }
 
-const canopy_integrator canopy_integrator_rk4 = {"rk4", 4, 0, 0, step};
+const canopy_integrator canopy_integrator_rk4 = {
+    "rk4", 4, 0, 0, alloc, step, canopy_vectors_state_free};

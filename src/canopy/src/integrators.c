@@ -1,4 +1,4 @@
-/* integrators.c — the table of built-in integrators, lookup by name, and a shared vector helper. */
+/* integrators.c — the table of built-in integrators, lookup by name, the model's stepper (its integrator's own state) and a shared vector helper. */
 #include "integrator.h"
 
 #include <string.h>
@@ -29,6 +29,36 @@ const canopy_integrator *canopy_integrator_find(const char *name)
     for (int i = 0; i < TABLE_SIZE; ++i)
         if (strcmp(table[i]->name, name) == 0) return table[i];
     return NULL;
+}
+
+canopy_status canopy_stepper_prepare(canopy_model *model)
+{
+    canopy_stepper *s = &model->stepper;
+    const canopy_integrator *type = model->integrator;
+    const int nodes = model->nodes.count;
+    if (s->type == type && s->nodes == nodes && s->state != NULL)
+        return CANOPY_OK;
+    size_t bytes = 0;
+    void *state = type->alloc(nodes, &bytes);
+    if (state == NULL)
+        return canopy_fail(model, CANOPY_ERR_MEMORY,
+                           "cannot allocate the workspace of integrator '%s' "
+                           "for %d nodes", type->name, nodes);
+    canopy_stepper_free(s);
+    s->type = type;
+    s->state = state;
+    s->nodes = nodes;
+    s->bytes = bytes;
+    return CANOPY_OK;
+}
+
+void canopy_stepper_free(canopy_stepper *s)
+{
+    if (s->type != NULL) s->type->free(s->state);
+    s->type = NULL;
+    s->state = NULL;
+    s->nodes = 0;
+    s->bytes = 0;
 }
 
 void canopy_axpy(int n, const double *x, double s, const double *y, double *z)

@@ -138,16 +138,6 @@ canopy_status canopy_model_create(canopy_model **out)
     return CANOPY_OK;
 }
 
-static void free_work(canopy_model *m)
-{
-    for (int i = 0; i < CANOPY_WORK_ARRAYS; ++i) {
-        free(m->work[i]);
-        m->work[i] = NULL;
-    }
-    m->work_nodes = 0;
-    m->work_bytes = 0;
-}
-
 void canopy_model_destroy(canopy_model **model)
 {
     if (model == NULL || *model == NULL) return;
@@ -164,7 +154,9 @@ void canopy_model_destroy(canopy_model **model)
     canopy_hinge_filter_free(&m->hinges.filter);
     canopy_state_free(&m->checkpoint);
     canopy_state_free(&m->rollback);
-    free_work(m);
+    canopy_stepper_free(&m->stepper);
+    canopy_hinge_solver_destroy(&m->hinge_solver);
+    canopy_vectors_free(&m->bound_sums);
     free(m);
     *model = NULL;
 }
@@ -448,7 +440,7 @@ canopy_status canopy_model_set_payload_node(canopy_model *model, int node)
     return CANOPY_OK;
 }
 
-/* --- validation and work space ------------------------------------------ */
+/* --- validation and workspaces ------------------------------------------ */
 
 canopy_status canopy_model_prepare(canopy_model *model)
 {
@@ -485,23 +477,20 @@ canopy_status canopy_model_prepare(canopy_model *model)
                            "mass) needs an explicit integrator, newmark or "
                            "hht, not '%s'",
                            model->integrator->name);
-    if (model->work_nodes != n->count) {
-        free_work(model);
-        size_t bytes = 3 * sizeof(double) * (size_t)n->count;
-        for (int i = 0; i < CANOPY_WORK_ARRAYS; ++i) {
-            model->work[i] = calloc(1, bytes);
-            if (model->work[i] == NULL) {
-                free_work(model);
-                return canopy_fail(model, CANOPY_ERR_MEMORY,
-                                   "cannot allocate work space for %d nodes",
-                                   n->count);
-            }
-        }
-        model->work_nodes = n->count;
-        model->work_bytes = bytes * CANOPY_WORK_ARRAYS;
-    }
-    canopy_status st = canopy_hinges_build(model);
+    /* Each workspace is replaced only once its successor is allocated. */
+    canopy_status st = canopy_stepper_prepare(model);
     if (st != CANOPY_OK) return st;
+    if (model->bound_sums.nodes != n->count || model->bound_sums.data == NULL) {
+        canopy_vectors sums;
+        if (canopy_vectors_alloc(&sums, 1, n->count) != 0)
+            return canopy_fail(model, CANOPY_ERR_MEMORY,
+                               "cannot allocate the frequency bound's sums "
+                               "for %d nodes", n->count);
+        canopy_vectors_free(&model->bound_sums);
+        model->bound_sums = sums;
+    }
+    if ((st = canopy_hinges_build(model)) != CANOPY_OK) return st;
+    if ((st = canopy_hinge_solver_prepare(model)) != CANOPY_OK) return st;
     model->prepared = 1;
     return CANOPY_OK;
 }
@@ -954,7 +943,9 @@ size_t canopy_model_memory_bytes(const canopy_model *model)
              (9 * n + 12 * largest) * sizeof(double) +
              entries * (sizeof(int) + sizeof(double));
     }
-    b += model->work_bytes;
+    b += model->stepper.bytes;
+    b += canopy_hinge_solver_bytes(model->hinge_solver);
+    b += canopy_vectors_bytes(&model->bound_sums);
     b += 9 * sizeof(double) * (size_t)model->checkpoint.count;
     b += 9 * sizeof(double) * (size_t)model->rollback.count;
     return b;

@@ -3,12 +3,26 @@
 #define CANOPY_MODEL_INTERNAL_H
 
 #include "canopy.h"
+#include "vectors.h"
 
 #include <stddef.h>
 
 #define CANOPY_MESSAGE_SIZE 512
 
 typedef struct canopy_integrator canopy_integrator;
+
+/* The model's integrator with its own state (integrator.h, integrators.c):
+ * `state` is type->alloc's workspace for `nodes` nodes; type NULL: none. */
+typedef struct canopy_stepper {
+    const canopy_integrator *type;
+    void *state;
+    int nodes;
+    size_t bytes;
+} canopy_stepper;
+
+/* The implicit hinge dashpots' conjugate-gradient workspace
+ * (bending_implicit.c). */
+typedef struct canopy_hinge_solver canopy_hinge_solver;
 
 /* Growable arrays of nodes, springs and triangles (structure of arrays). */
 typedef struct canopy_nodes {
@@ -108,12 +122,15 @@ struct canopy_model {
     canopy_state_copy checkpoint; /* user checkpoint */
     canopy_state_copy rollback;   /* entry state of step/advance */
 
-    /* Work space, sized to the node count by canopy_model_prepare. */
-    int work_nodes;
-    double *work[16];
-    size_t work_bytes;
+    /* Workspaces, each owned by what uses it and sized to the node count
+     * by canopy_model_prepare. */
+    canopy_stepper stepper;            /* the integrator's */
+    canopy_hinge_solver *hinge_solver; /* the implicit hinge dashpots'
+                                          (NULL unless they are on) */
+    canopy_vectors bound_sums;         /* canopy_model_frequency_bound's
+                                          per-node sums (one vector) */
 
-    int prepared;               /* topology validated and work allocated */
+    int prepared;               /* topology validated, workspaces allocated */
     int directional_added_mass; /* some node's added mass has a direction */
     char message[CANOPY_MESSAGE_SIZE];
 };
@@ -144,10 +161,8 @@ canopy_status canopy_reject(const canopy_model *model, canopy_status status,
 #endif
     ;
 
-/* Validate masses and topology, (re)allocate work arrays. */
+/* Validate masses and topology, (re)allocate the workspaces. */
 canopy_status canopy_model_prepare(canopy_model *model);
-/* Number of work arrays of 3*node doubles available to an integrator. */
-#define CANOPY_WORK_ARRAYS 16
 
 /* Forces (3*n) at positions x, velocities v: springs, dashpots, gravity,
  * pressure, extra loads. Fixed nodes get their force too (a reaction). */
@@ -192,8 +207,17 @@ void canopy_hinge_filter_add_diagonal(canopy_model *model, int k,
 /* f += the hinge dashpots' forces at the model's state, as the implicit
  * update applies them (filtered if the filter is on). */
 void canopy_hinge_damping_implicit_forces(canopy_model *model, double *f);
+/* The implicit hinge dashpots' workspace (bending_implicit.c): prepare
+ * makes it when they are on (bending_implicit and hinges), sized to the
+ * node count, and drops it otherwise; on failure CANOPY_ERR_MEMORY with the
+ * handle's message, and the model keeps the one it had. destroy frees it
+ * and sets *solver to NULL (NULL: no-op); bytes: its size (NULL: 0). */
+canopy_status canopy_hinge_solver_prepare(canopy_model *model);
+void canopy_hinge_solver_destroy(canopy_hinge_solver **solver);
+size_t canopy_hinge_solver_bytes(const canopy_hinge_solver *solver);
 /* With bending_implicit: v <- (M + h C)^-1 M v at the current positions
- * (bending_implicit.c); CANOPY_ERR_DIVERGED if the solve fails. */
+ * (bending_implicit.c, with the model's hinge solver);
+ * CANOPY_ERR_DIVERGED if the solve fails. */
 canopy_status canopy_hinge_damping_implicit_update(canopy_model *model,
                                                    double h);
 /* Accelerations (3*n): forces over effective mass; zero at fixed nodes. */
