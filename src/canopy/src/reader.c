@@ -25,11 +25,20 @@ static canopy_status reader_fail(canopy_reader *r, canopy_status st,
 static canopy_status reader_fail(canopy_reader *r, canopy_status st,
                                  const char *fmt, ...)
 {
+    char text[CANOPY_MESSAGE_SIZE];
     va_list args;
     va_start(args, fmt);
-    vsnprintf(r->message, sizeof r->message, fmt, args);
+    vsnprintf(text, sizeof text, fmt, args);
     va_end(args);
-    return st;
+    return canopy_format_message(r->message, sizeof r->message, st, "%s",
+                                 text);
+}
+
+/* An internal message without its leading "CANOPY_ERR_...: ". */
+static const char *reason(const char *msg)
+{
+    const char *text = strchr(msg, ':');
+    return text && text[1] ? text + 2 : msg;
 }
 
 canopy_status canopy_reader_create(canopy_reader **out)
@@ -111,7 +120,7 @@ canopy_status canopy_reader_open(canopy_reader *reader, const char *path)
     } H5E_END_TRY;
     if (st != CANOPY_OK) {
         free(h5_path);
-        return reader_fail(reader, st, "open: %s", msg);
+        return reader_fail(reader, st, "open: %s", reason(msg));
     }
     free(reader->h5_path);
     free(reader->steps);
@@ -217,7 +226,7 @@ static canopy_status load(canopy_reader *r, const char *call, int index,
     char msg[CANOPY_MESSAGE_SIZE] = "";
     st = canopy_h5_load_state(model, r->h5_path, r->steps[index].number, what,
                               velocity_offset, msg, sizeof msg);
-    if (st != CANOPY_OK) return reader_fail(r, st, "%s: %s", call, msg);
+    if (st != CANOPY_OK) return reader_fail(r, st, "%s: %s", call, reason(msg));
     r->message[0] = '\0';
     return CANOPY_OK;
 }
@@ -292,7 +301,7 @@ canopy_status canopy_reader_get_nodal_forces(canopy_reader *reader, int index,
         if (n > 0) memcpy(f, buf, sizeof(double) * 3 * (size_t)n);
         reader->message[0] = '\0';
     } else {
-        reader_fail(reader, st, "get_nodal_forces: %s", msg);
+        reader_fail(reader, st, "get_nodal_forces: %s", reason(msg));
     }
     free(buf);
     return st;
