@@ -41,6 +41,11 @@ const char *canopy_path_basename(const char *path);
  * it. Returns a negative id on failure. The caller closes it. */
 hid_t canopy_h5_fapl(void);
 
+/* Open h5_path read-only with canopy_h5_fapl(). On failure returns a
+ * negative id with a CANOPY_ERR_IO message in msg naming the file (it does
+ * not exist, or is unreadable or not HDF5). HDF5 printing must be off. */
+hid_t canopy_h5_open_read(const char *h5_path, char *msg, size_t msg_size);
+
 /* Read the scalar int attribute `name` of `obj` into *value (any integer
  * type in the file). Returns a negative value on failure. */
 herr_t canopy_h5_read_int_attribute(hid_t obj, const char *name, int *value);

@@ -6,7 +6,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 
 struct canopy_reader {
     char *h5_path;              /* path.h5 of the open file; NULL: none */
@@ -67,21 +66,8 @@ static canopy_status open_impl(const char *h5_path, canopy_h5_counts *counts,
                                canopy_output_step **steps, int *count,
                                char *msg, size_t msg_size)
 {
-    hid_t fapl = canopy_h5_fapl();
-    if (fapl < 0)
-        return canopy_format_message(msg, msg_size, CANOPY_ERR_IO,
-                                     "cannot make an HDF5 file access "
-                                     "property list for '%s'", h5_path);
-    hid_t file = H5Fopen(h5_path, H5F_ACC_RDONLY, fapl);
-    H5Pclose(fapl);
-    if (file < 0) {
-        if (access(h5_path, F_OK) != 0)
-            return canopy_format_message(msg, msg_size, CANOPY_ERR_IO,
-                                         "'%s' does not exist", h5_path);
-        return canopy_format_message(msg, msg_size, CANOPY_ERR_IO,
-                                     "cannot open '%s' (unreadable or not an "
-                                     "HDF5 file)", h5_path);
-    }
+    const hid_t file = canopy_h5_open_read(h5_path, msg, msg_size);
+    if (file < 0) return CANOPY_ERR_IO;
     canopy_status st = canopy_h5_read_counts(file, h5_path, counts, msg,
                                              msg_size);
     if (st == CANOPY_OK)
@@ -250,16 +236,8 @@ canopy_status canopy_reader_read_motion(canopy_reader *reader, int index,
 static canopy_status forces_impl(const canopy_reader *r, int number, int n,
                                  double *f, char *msg, size_t msg_size)
 {
-    hid_t fapl = canopy_h5_fapl();
-    if (fapl < 0)
-        return canopy_format_message(msg, msg_size, CANOPY_ERR_IO,
-                                     "cannot make an HDF5 file access "
-                                     "property list for '%s'", r->h5_path);
-    hid_t file = H5Fopen(r->h5_path, H5F_ACC_RDONLY, fapl);
-    H5Pclose(fapl);
-    if (file < 0)
-        return canopy_format_message(msg, msg_size, CANOPY_ERR_IO,
-                                     "cannot open '%s'", r->h5_path);
+    const hid_t file = canopy_h5_open_read(r->h5_path, msg, msg_size);
+    if (file < 0) return CANOPY_ERR_IO;
     char name[32];
     snprintf(name, sizeof name, "/steps/" CANOPY_STEP_NAME_FMT, number);
     canopy_status st;

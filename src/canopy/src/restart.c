@@ -5,7 +5,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 
 canopy_status canopy_h5_read_doubles(hid_t group, const char *group_name,
                                   const char *name, hsize_t rows,
@@ -151,21 +150,8 @@ static canopy_status read_impl(canopy_model *m, const char *h5_path, int step,
                                canopy_h5_load what, state_buffers *b,
                                char *msg, size_t msg_size)
 {
-    hid_t fapl = canopy_h5_fapl();
-    if (fapl < 0)
-        return canopy_format_message(msg, msg_size, CANOPY_ERR_IO,
-                                     "cannot make an HDF5 file access "
-                                     "property list for '%s'", h5_path);
-    hid_t file = H5Fopen(h5_path, H5F_ACC_RDONLY, fapl);
-    H5Pclose(fapl);
-    if (file < 0) {
-        if (access(h5_path, F_OK) != 0)
-            return canopy_format_message(msg, msg_size, CANOPY_ERR_IO,
-                                         "'%s' does not exist", h5_path);
-        return canopy_format_message(msg, msg_size, CANOPY_ERR_IO,
-                                     "cannot open '%s' (unreadable or not an "
-                                     "HDF5 file)", h5_path);
-    }
+    const hid_t file = canopy_h5_open_read(h5_path, msg, msg_size);
+    if (file < 0) return CANOPY_ERR_IO;
     canopy_h5_counts counts;
     canopy_output_step *steps = NULL;
     int count = 0;
