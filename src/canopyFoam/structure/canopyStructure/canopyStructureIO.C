@@ -427,6 +427,21 @@ void Foam::canopyStructure::readState
 }
 
 
+Foam::canopyStructure::origin Foam::canopyStructure::startsFrom
+(
+    const Time& runTime
+) const
+{
+    // The entry is checked first, whatever the run starts from
+    const bool haveFile = !initialStateFile(runTime).empty();
+    if (runTime.value() != 0 && stateAvailable(runTime))
+    {
+        return origin::restart;
+    }
+    return haveFile ? origin::initialState : origin::built;
+}
+
+
 Foam::fileName Foam::canopyStructure::initialStateFile
 (
     const Time& runTime
