@@ -164,20 +164,11 @@ Foam::interfaceQuasiNewton::interfaceQuasiNewton
     const scalar omega0
 )
 :
-    // Members are initialised in declaration order: reuse is read (and
-    // checked) before filter
-    omega0_(omega0),
-    reuse_(readReuse(coupling)),
-    filter_(readFilter(coupling)),
-    V_(),
-    W_(),
-    pastV_(),
-    pastW_(),
-    previousResidual_(),
-    previousOutput_(),
-    columnsUsed_(0),
-    columnsDropped_(0)
-{}
+    // reuse is read (and checked) before filter
+    interfaceQuasiNewton(omega0, readReuse(coupling), 0)
+{
+    filter_ = readFilter(coupling);
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
