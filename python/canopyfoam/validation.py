@@ -1919,7 +1919,37 @@ def write_report():
                    "(libcanopy canopy_line_tension) and an implicit step "
                    "whose Newton solve fails is halved (down to 1/16): "
                    "before these, HHT's Newton solve stopped the 4 m fold "
-                   "at 0.10 s.", ""]
+                   "at 0.10 s.", "",
+                   "History (this text stood in addedMassStabiliser.H). The "
+                   "predictor zero (abar starting at zero in every step) did "
+                   "not help the 1/3-scale G-11 from the flat start: in the "
+                   "deep folds the cloth still ran away at the same times, "
+                   "and the default run stopped at 5.34 s instead of 5.5 s, "
+                   "so lastStep stayed the default. A one-node model of the "
+                   "converged step (mass m, spring k, the air's added mass M "
+                   "as a load -M (v1 - v0)/dt held over the step): with the "
+                   "structure sub-stepped (RK4, or HHT at omega h <= 50) a "
+                   "stiff node (omega dt > 1) grows from step to step, "
+                   "alternating in sign, for most k, with or without the "
+                   "stabiliser; with one implicit HHT step per time step it "
+                   "is stable for every k and M >= 0 without the stabiliser, "
+                   "and with the balance stepMean it grows (|lambda| up to "
+                   "1.34 a step) wherever M < m_A (the skirt, the folds); "
+                   "with the balance endOfStep it is stable for every k and "
+                   "M. With Aitken's factor up to 1 the 4 m fold diverged at "
+                   "0.33 s; at most 0.5 it inflated to 3.13 s; held at 0.3 "
+                   "it ran to 5 s in 6.4 iterations a step but descended at "
+                   "10.5 +- 0.9 m/s over 3.3-5 s (the flat and 2 m folded "
+                   "starts: 4.1-4.2 m/s). That was a momentum leak, not the "
+                   "scheme's: the 4 m fold is crumpled at the scale of the "
+                   "cells (neighbouring triangles' normals 44 degrees apart "
+                   "on average, 7 on the 2 m fold), and the IB force on the "
+                   "air (1700-7400 N) was 3 to 7 times the normal load the "
+                   "cloth felt (500-2400 N). With coupling.tangentialLoad "
+                   "the cloth takes the whole reaction; that needs the "
+                   "stabiliser in every direction (with the normal one the 4 "
+                   "m fold's first step diverges), and then the 4 m fold "
+                   "descends like the other starts (study G11fullLoad).", ""]
         elif name in ("G11compression", "C9compression"):
             if name == "G11compression":
                 refs = G11_SEED_REF

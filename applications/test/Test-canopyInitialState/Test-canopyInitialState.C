@@ -18,11 +18,15 @@ Description
     (canopyStructure(runTime, false)) and as a solver does, with the entry
     initialState applied (a bad or incompatible initialState stops there
     with FatalIOError naming the entry: exit status 1). The master reads
-    the file independently with the HDF5 C library. Exits 1 unless:
+    the file's first and last steps with libcanopy's reader
+    (canopy_reader_read_state, the call a restart makes, not the
+    canopy_reader_read_motion the structure's initial state is read
+    with) into two more structures built flat. Exits 1 unless:
 
     The file and the restore
-    - the file holds the model's node, spring and triangle counts, and the
-      same triangles and spring ends (the fold changed no connectivity);
+    - the file holds the model's structure: node, spring and triangle
+      counts, triangles, spring ends and rest lengths (the reader's
+      checks: the fold changed no connectivity and no rest length);
     - its first step is the flat canopy, bit for bit;
     - the structure's positions are the file's last step bit for bit, its
       velocities are the file's, and all zero;
@@ -66,9 +70,9 @@ Usage
 #include "canopyStructure.H"
 
 #include "canopy.h"
-#include <hdf5.h>
 
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <queue>
 #include <string>
@@ -106,64 +110,60 @@ std::string str(const scalar x)
 }
 
 
-// ---- reading the file (HDF5 C API, read-only) -------------------------------
+// ---- reading the file (libcanopy's reader) ----------------------------------
 
-// A whole dataset into data; its dimensions in dims (rank <= 2)
-template<class T>
-bool readAll
-(
-    const hid_t file,
-    const std::string& path,
-    const hid_t memType,
-    std::vector<T>& data,
-    std::vector<hsize_t>& dims
-)
+// A canopy_reader, destroyed with the object
+class reader
 {
-    const hid_t set = H5Dopen2(file, path.c_str(), H5P_DEFAULT);
-    if (set < 0) return false;
-    const hid_t space = H5Dget_space(set);
-    const int rank = H5Sget_simple_extent_ndims(space);
-    bool ok = rank >= 1 && rank <= 2;
-    if (ok)
+    canopy_reader* r_;
+
+public:
+
+    reader()
+    :
+        r_(nullptr)
     {
-        dims.assign(rank, 0);
-        H5Sget_simple_extent_dims(space, dims.data(), nullptr);
-        hsize_t count = 1;
-        for (const hsize_t d : dims) count *= d;
-        data.assign(count, T(0));
-        ok = count == 0
-          || H5Dread(set, memType, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()) >= 0;
+        canopy_reader_create(&r_);
     }
-    H5Sclose(space);
-    H5Dclose(set);
-    return ok;
+
+    ~reader()
+    {
+        canopy_reader_destroy(&r_);
+    }
+
+    reader(const reader&) = delete;
+    void operator=(const reader&) = delete;
+
+    canopy_reader* get() const { return r_; }
+
+    std::string message() const
+    {
+        return r_ ? canopy_reader_message(r_) : "out of memory";
+    }
+};
+
+
+// The group name NNNNNN of step number `number`
+std::string stepName(const int number)
+{
+    char name[32];
+    std::snprintf(name, sizeof name, "%06d", number);
+    return name;
 }
 
 
-// Names of the step groups, in increasing order
-std::vector<std::string> stepNames(const hid_t file)
+// A structure's positions or velocities as 3 n doubles
+std::vector<double> flatten(const vectorField& v)
 {
-    std::vector<std::string> names;
-    const hid_t g = H5Gopen2(file, "/steps", H5P_DEFAULT);
-    if (g < 0) return names;
-    H5G_info_t info;
-    if (H5Gget_info(g, &info) >= 0)
+    std::vector<double> d(3*v.size());
+    forAll(v, i)
     {
-        for (hsize_t i = 0; i < info.nlinks; ++i)
+        for (direction c = 0; c < 3; ++c)
         {
-            char name[64];
-            if
-            (
-                H5Lget_name_by_idx(g, ".", H5_INDEX_NAME, H5_ITER_INC, i,
-                    name, sizeof name, H5P_DEFAULT) > 0
-            )
-            {
-                names.push_back(name);
-            }
+            d[3*i + c] = v[i][c];
         }
     }
-    H5Gclose(g);
-    return names;
+    return d;
 }
 
 
@@ -322,6 +322,10 @@ int main(int argc, char *argv[])
     canopyStructure flat(runTime, false);
     canopyStructure folded(runTime);
 
+    // The file's first and last steps are read into these (master only)
+    canopyStructure firstStep(runTime, false);
+    canopyStructure lastStep(runTime, false);
+
     const fileName h5(folded.initialStateFile(runTime));
     if (h5.empty())
     {
@@ -363,77 +367,85 @@ int main(int argc, char *argv[])
 
         Info<< "The file and the restore:" << endl;
 
-        std::vector<int> fileTri, fileEnds, tri(3*nt), ends(2*ns);
-        std::vector<double> x0File, xFile, vFile;
-        std::vector<hsize_t> dTri, dEnds, dx0, dx, dv;
-        std::vector<std::string> steps;
-        bool read = false;
-        H5E_BEGIN_TRY
-        {
-            const hid_t file = H5Fopen(h5.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-            if (file >= 0)
-            {
-                steps = stepNames(file);
-                read =
-                    steps.size() >= 2
-                 && readAll(file, "/mesh/triangles", H5T_NATIVE_INT, fileTri, dTri)
-                 && readAll(file, "/mesh/springs", H5T_NATIVE_INT, fileEnds, dEnds)
-                 && readAll(file, "/steps/" + steps.front() + "/x",
-                        H5T_NATIVE_DOUBLE, x0File, dx0)
-                 && readAll(file, "/steps/" + steps.back() + "/x",
-                        H5T_NATIVE_DOUBLE, xFile, dx)
-                 && readAll(file, "/steps/" + steps.back() + "/v",
-                        H5T_NATIVE_DOUBLE, vFile, dv);
-                H5Fclose(file);
-            }
-        }
-        H5E_END_TRY;
+        const reader file;
+        int count = 0, firstNumber = -1, lastNumber = -1;
+        bool read =
+            file.get()
+         && canopy_reader_open(file.get(), h5.lessExt().c_str()) == CANOPY_OK
+         && (count = canopy_reader_step_count(file.get())) >= 2
+         && canopy_reader_step(file.get(), 0, &firstNumber, nullptr)
+         == CANOPY_OK
+         && canopy_reader_step(file.get(), count - 1, &lastNumber, nullptr)
+         == CANOPY_OK;
         report
         (
-            read, "the file holds the mesh and at least two steps",
-            std::to_string(steps.size()) + " steps"
+            read, "the file holds at least two steps",
+            read ? std::to_string(count) + " steps" : file.message()
         );
         if (!read)
         {
             FatalErrorInFunction
-                << "Test-canopyInitialState: cannot read " << h5
-                << exit(FatalError);
+                << "Test-canopyInitialState: cannot read " << h5 << ": "
+                << file.message().c_str() << exit(FatalError);
         }
 
-        canopy_model_get_triangles(m0, tri.data(), nt);
-        canopy_model_get_springs(m0, ends.data(), nullptr, nullptr, ns);
+        // canopy_reader_read_state fails with the first difference unless
+        // the file holds this structure
+        std::string why;
+        read =
+            canopy_reader_read_state(file.get(), 0, firstStep.model())
+         == CANOPY_OK;
+        if (read)
+        {
+            read =
+                canopy_reader_read_state
+                (
+                    file.get(), count - 1, lastStep.model()
+                )
+             == CANOPY_OK;
+        }
+        if (!read)
+        {
+            why = file.message();
+        }
         report
         (
-            dx.size() == 2 && dx[0] == hsize_t(n) && dx[1] == 3
-         && dTri.size() == 2 && dTri[0] == hsize_t(nt)
-         && dEnds.size() == 2 && dEnds[0] == hsize_t(ns),
-            "node, spring and triangle counts unchanged",
-            std::to_string(n) + ", " + std::to_string(ns) + ", "
+            read,
+            "the file holds this structure (node, spring and triangle counts,"
+            " triangles, spring ends, rest lengths)",
+            read
+          ? std::to_string(n) + ", " + std::to_string(ns) + ", "
           + std::to_string(nt)
+          : why
         );
-        report(fileTri == tri, "triangles unchanged (same vertices)");
-        report(fileEnds == ends, "springs unchanged (same ends)");
+        if (!read)
+        {
+            FatalErrorInFunction
+                << "Test-canopyInitialState: cannot read " << h5 << ": "
+                << why.c_str() << exit(FatalError);
+        }
+
+        std::vector<int> ends(2*ns);
+        canopy_model_get_springs(m0, ends.data(), nullptr, nullptr, ns);
 
         const pointField x0(flat.points());
         const pointField x(folded.points());
         const vectorField v(folded.velocities());
-        const double* x0Raw = reinterpret_cast<const double*>(x0.cdata());
-        const double* xRaw = reinterpret_cast<const double*>(x.cdata());
-        const double* vRaw = reinterpret_cast<const double*>(v.cdata());
 
         report
         (
-            x0File == std::vector<double>(x0Raw, x0Raw + 3*n),
-            "step " + steps.front() + " is the flat canopy, bit for bit"
+            flatten(firstStep.points()) == flatten(x0),
+            "step " + stepName(firstNumber) + " is the flat canopy, bit for bit"
         );
         report
         (
-            xFile == std::vector<double>(xRaw, xRaw + 3*n),
-            "positions = step " + steps.back() + " of the file, bit for bit"
+            flatten(lastStep.points()) == flatten(x),
+            "positions = step " + stepName(lastNumber)
+          + " of the file, bit for bit"
         );
         report
         (
-            vFile == std::vector<double>(vRaw, vRaw + 3*n),
+            flatten(lastStep.velocities()) == flatten(v),
             "velocities = the file's, bit for bit"
         );
         report(max(mag(v)) == 0, "velocities all zero");

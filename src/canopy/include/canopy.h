@@ -3,7 +3,8 @@
  * This header is the manual. It is laid out in the order a program calls it:
  * status codes, constants, the model handle and how to build it (by hand or
  * with the geometry builders), time integration, the coupling calls a fluid
- * solver makes every time step, diagnostics, and HDF5/XDMF output.
+ * solver makes every time step, diagnostics, HDF5/XDMF output, and reading
+ * output files back (restart, initial states).
  *
  * Conventions (they hold for every function below)
  * - Handles are opaque. `*_create(..., &out)` makes one, `*_destroy(&h)` frees
@@ -634,6 +635,81 @@ void canopy_output_destroy(canopy_output **output);
  * the uninterrupted run exactly. */
 canopy_status canopy_model_read_state(canopy_model *model, const char *path,
                                       int step);
+
+/* --- Reading an output file ----------------------------------------------
+ * A reader knows one output file (path.h5 as canopy_output writes it): its
+ * mesh counts and its steps, sorted by their numbers and addressed by index
+ * 0 .. step_count - 1 (not by the NNNNNN of their groups). open reads the
+ * step list once and closes the file; every later call opens it again,
+ * read-only and without HDF5 file locking, so a file another handle is
+ * writing can be read. A call that fails says why on
+ * canopy_reader_message() (naming the file) and changes neither the reader
+ * nor the model it was given.
+ *
+ *     canopy_reader *r = NULL;
+ *     canopy_reader_create(&r);
+ *     int s;
+ *     if (canopy_reader_open(r, "postProcessing/canopy/canopy") != CANOPY_OK ||
+ *         canopy_reader_find_step(r, 1.25, 1e-6, &s) != CANOPY_OK ||
+ *         canopy_reader_read_state(r, s, model) != CANOPY_OK)
+ *         fprintf(stderr, "%s\n", canopy_reader_message(r));
+ *     canopy_reader_destroy(&r);
+ */
+typedef struct canopy_reader canopy_reader;
+
+/* Make a reader with no file open. Fails only for a NULL out
+ * (CANOPY_ERR_ARGUMENT) or out of memory (CANOPY_ERR_MEMORY, *out NULL). */
+canopy_status canopy_reader_create(canopy_reader **out);
+/* Free the reader and set *reader to NULL. NULL or *reader == NULL: no-op. */
+void canopy_reader_destroy(canopy_reader **reader);
+/* Message of the last failed call on this reader ("" if none). */
+const char *canopy_reader_message(const canopy_reader *reader);
+
+/* Open path.h5 (`path` without extension, as for canopy_output_create):
+ * read its /mesh counts and its steps (number and time). A missing or
+ * unreadable file is CANOPY_ERR_IO; a file without /mesh counts, or with a
+ * step group lacking a finite scalar 'time', CANOPY_ERR_FORMAT. A file
+ * without steps opens with a step count of 0. On failure the reader keeps
+ * the file it had open before, if any. */
+canopy_status canopy_reader_open(canopy_reader *reader, const char *path);
+/* Steps of the open file (0 when none is open or reader is NULL). */
+int canopy_reader_step_count(const canopy_reader *reader);
+/* Step `index`: the NNNNNN of its group into *number and its time [s] into
+ * *time (either may be NULL). CANOPY_ERR_STATE with no file open,
+ * CANOPY_ERR_RANGE for an index outside 0 .. step_count - 1. */
+canopy_status canopy_reader_step(canopy_reader *reader, int index,
+                                 int *number, double *time);
+/* The step whose time is nearest `time` among those within `tolerance`
+ * (>= 0, finite) of it, into *index; of two equally near, the lower index.
+ * None within the tolerance: CANOPY_ERR_RANGE, the message giving the
+ * file's time range and its nearest step. */
+canopy_status canopy_reader_find_step(canopy_reader *reader, double time,
+                                      double tolerance, int *index);
+/* Load step `index` into a model built the same way, as
+ * canopy_model_read_state does (time, positions, velocities, pressure jumps,
+ * nodal forces, the integrator's carried acceleration), after checking that
+ * the file holds the model's structure: the counts of nodes, springs,
+ * triangles and lines, every triangle's vertices and spring's ends, and the
+ * rest lengths to 1e-9 relative; any difference is CANOPY_ERR_FORMAT naming
+ * the file and the first thing that differs. A value in the step that is not
+ * finite is CANOPY_ERR_FORMAT. On failure the model is unchanged (its
+ * message too: the reason is on the reader's). */
+canopy_status canopy_reader_read_state(canopy_reader *reader, int index,
+                                       canopy_model *model);
+/* The same checks, but only the motion is loaded: positions, and velocities
+ * plus velocity_offset (3 doubles added to every node's; NULL: none), as
+ * canopy_model_set_positions and canopy_model_set_velocities would set them
+ * (a guided node's velocity projected on its wire, the carried acceleration
+ * dropped). The model's time, loads and checkpoint are kept. For a state
+ * made by another run (a folded canopy) to start from. */
+canopy_status canopy_reader_read_motion(canopy_reader *reader, int index,
+                                        canopy_model *model,
+                                        const double velocity_offset[3]);
+/* The extra nodal forces [N] (canopy_model_set_nodal_forces) step `index`
+ * was written with, into f (3*n doubles); n must be the file's node count
+ * (CANOPY_ERR_RANGE otherwise). f is untouched on failure. */
+canopy_status canopy_reader_get_nodal_forces(canopy_reader *reader, int index,
+                                             double *f, int n);
 
 #ifdef __cplusplus
 }

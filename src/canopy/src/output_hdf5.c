@@ -52,6 +52,29 @@ const char *canopy_path_basename(const char *path)
     return slash ? slash + 1 : path;
 }
 
+hid_t canopy_h5_open_read(const char *h5_path, char *msg, size_t msg_size)
+{
+    const hid_t fapl = canopy_h5_fapl();
+    if (fapl < 0) {
+        canopy_format_message(msg, msg_size, CANOPY_ERR_IO,
+                              "cannot make an HDF5 file access property "
+                              "list for '%s'", h5_path);
+        return -1;
+    }
+    const hid_t file = H5Fopen(h5_path, H5F_ACC_RDONLY, fapl);
+    H5Pclose(fapl);
+    if (file < 0) {
+        if (access(h5_path, F_OK) != 0)
+            canopy_format_message(msg, msg_size, CANOPY_ERR_IO,
+                                  "'%s' does not exist", h5_path);
+        else
+            canopy_format_message(msg, msg_size, CANOPY_ERR_IO,
+                                  "cannot open '%s' (unreadable or not an "
+                                  "HDF5 file)", h5_path);
+    }
+    return file;
+}
+
 hid_t canopy_h5_fapl(void)
 {
     hid_t fapl = H5Pcreate(H5P_FILE_ACCESS);

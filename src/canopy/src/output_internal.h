@@ -41,6 +41,11 @@ const char *canopy_path_basename(const char *path);
  * it. Returns a negative id on failure. The caller closes it. */
 hid_t canopy_h5_fapl(void);
 
+/* Open h5_path read-only with canopy_h5_fapl(). On failure returns a
+ * negative id with a CANOPY_ERR_IO message in msg naming the file (it does
+ * not exist, or is unreadable or not HDF5). HDF5 printing must be off. */
+hid_t canopy_h5_open_read(const char *h5_path, char *msg, size_t msg_size);
+
 /* Read the scalar int attribute `name` of `obj` into *value (any integer
  * type in the file). Returns a negative value on failure. */
 herr_t canopy_h5_read_int_attribute(hid_t obj, const char *name, int *value);
@@ -84,5 +89,36 @@ canopy_status canopy_xdmf_write(const char *xdmf_path, const char *h5_name,
                                 const canopy_xdmf_mesh *mesh,
                                 const canopy_output_step *steps, int count,
                                 char *msg, size_t msg_size);
+
+/* Read the double dataset `group`/`name` (group_name: its path, for
+ * messages) into buf, checking its shape is rows (cols 0) or rows x cols
+ * and every value finite; CANOPY_ERR_FORMAT naming `file_name` otherwise.
+ * HDF5 printing must be off. */
+canopy_status canopy_h5_read_doubles(hid_t group, const char *group_name,
+                                     const char *name, hsize_t rows,
+                                     hsize_t cols, double *buf,
+                                     const char *file_name, char *msg,
+                                     size_t msg_size);
+
+/* What canopy_h5_load_state takes from a step. */
+typedef enum canopy_h5_load {
+    /* time, x, v, f_ext, dp, carried acceleration; counts checked
+     * (canopy_model_read_state) */
+    CANOPY_H5_LOAD_RESTART = 0,
+    /* the same, and the mesh checked (triangles, springs, rest lengths) */
+    CANOPY_H5_LOAD_CHECKED = 1,
+    /* x and v + velocity_offset only, as set_positions and set_velocities
+     * (guided nodes' velocities projected, carried acceleration dropped);
+     * the mesh checked */
+    CANOPY_H5_LOAD_MOTION = 2
+} canopy_h5_load;
+
+/* Load step number `step` (-1: the last) of the file h5_path (with its
+ * extension) into the model. On failure the model is unchanged and msg
+ * holds the reason (naming the file). Sets no message on the model. */
+canopy_status canopy_h5_load_state(canopy_model *model, const char *h5_path,
+                                   int step, canopy_h5_load what,
+                                   const double velocity_offset[3], char *msg,
+                                   size_t msg_size);
 
 #endif /* CANOPY_OUTPUT_INTERNAL_H */

@@ -19,7 +19,12 @@
  *   are byte-identical;
  * - its message is fresh: a known failing call sets a sentinel message
  *   first, and afterwards the message must start with the returned status's
- *   name and must not be the sentinel. */
+ *   name and must not be the sentinel.
+ * Reader calls (canopy_reader_*) on the files the run wrote, the bad ones,
+ * bad paths, steps out of range and models of another structure: no call
+ * writes a file or leaves an HDF5 identifier open; a rejection leaves a fresh
+ * message on the reader, and the reader, the model (its message too) and
+ * the array it was given as they were. */
 #include "fuzz_api.h"
 
 #include "canopy.h"
@@ -29,6 +34,7 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <math.h>
+#include <signal.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -219,6 +225,9 @@ typedef struct fuzz {
     canopy_model *m;
     canopy_output *out;
     int out_stem;               /* f->stem index the output writes */
+    canopy_reader *r;
+    int reader_stem;            /* f->stem index the reader has open, -1 */
+    canopy_model *spare;        /* a model of another structure */
     char dir[256];
     char stem[FUZZ_PATHS][300];
     canopy_fuzz_counts *c;
@@ -576,6 +585,86 @@ static void after_call(fuzz *f, canopy_status st, int kind, int files)
     }
     check_checkpoint(f);
     check_quiet(f);
+}
+
+
+/* ---- the reader ------------------------------------------------------------ */
+
+/* What a reader shows through canopy.h: whether a file is open, and its
+ * steps' numbers and times. */
+typedef struct reader_image {
+    int open, count;
+    int *number;
+    double *time;
+} reader_image;
+
+static void reader_image_free(reader_image *img)
+{
+    free(img->number);
+    free(img->time);
+    memset(img, 0, sizeof *img);
+}
+
+/* Through the getters (which set the reader's message: take it before the
+ * sentinel). Returns 0 when a getter broke its promise. */
+static int reader_image_take(canopy_reader *r, reader_image *img)
+{
+    reader_image_free(img);
+    img->count = canopy_reader_step_count(r);
+    img->open = canopy_reader_step(r, 0, NULL, NULL) != CANOPY_ERR_STATE;
+    const size_t n = img->count > 0 ? (size_t)img->count : 0;
+    img->number = calloc(n + 1, sizeof(int));
+    img->time = calloc(n + 1, sizeof(double));
+    if (img->number == NULL || img->time == NULL || img->count < 0 ||
+        (!img->open && img->count != 0))
+        return 0;
+    for (int i = 0; i < img->count; ++i)
+        if (canopy_reader_step(r, i, &img->number[i], &img->time[i]) !=
+            CANOPY_OK)
+            return 0;
+    return 1;
+}
+
+static int reader_image_same(const reader_image *a, const reader_image *b)
+{
+    const size_t n = a->count > 0 ? (size_t)a->count : 0;
+    return a->open == b->open && a->count == b->count &&
+           memcmp(a->number, b->number, n * sizeof(int)) == 0 &&
+           memcmp(a->time, b->time, n * sizeof(double)) == 0;
+}
+
+/* The sentinels for a reader call: on the reader a failing open of a file
+ * named after the sentinel, on the model (if any) the model's sentinel. */
+static void set_reader_sentinels(fuzz *f, canopy_model *model)
+{
+    char path[400];
+    snprintf(path, sizeof path, "%s/missing" FUZZ_SENTINEL_TEXT, f->dir);
+    if (canopy_reader_open(f->r, path) != CANOPY_ERR_IO)
+        violation(f, "the reader's sentinel call was not rejected",
+                  canopy_reader_message(f->r));
+    if (model != NULL &&
+        canopy_model_set_max_omega_dt(model, FUZZ_SENTINEL_VALUE) !=
+            CANOPY_ERR_ARGUMENT)
+        violation(f, "the sentinel call was not rejected", NULL);
+}
+
+/* A successful find_step: the index names a step within the tolerance and
+ * no step is nearer (of two equally near, the lower index). */
+static void check_found(fuzz *f, const reader_image *img, double t,
+                        double tol, int found)
+{
+    if (found < 0 || found >= img->count) {
+        violation(f, "find_step gave an index out of range", NULL);
+        return;
+    }
+    const double d = fabs(img->time[found] - t);
+    if (!(d <= tol)) violation(f, "find_step gave a step beyond the tolerance",
+                               NULL);
+    for (int i = 0; i < img->count; ++i) {
+        const double di = fabs(img->time[i] - t);
+        if (di < d || (di == d && i < found))
+            violation(f, "find_step did not give the nearest step", NULL);
+    }
 }
 
 /* ---- actions ---------------------------------------------------------------- */
@@ -1088,6 +1177,213 @@ static void act_checkpoint(fuzz *f)
     }
 }
 
+/* One call on the fuzzer's reader, on the file of stem k (favouring the one
+ * the output writes), a bad path, an index out of range or a model of
+ * another structure; the checks of the header's "Reader calls". */
+static void act_reader(fuzz *f, int k)
+{
+    if (f->r == NULL || rnd(f, 40) == 0) {
+        ++f->c->calls;
+        f->action = "reader_destroy, reader_create";
+        canopy_reader_destroy(&f->r);
+        if (f->r != NULL) violation(f, "reader_destroy left the handle", NULL);
+        f->reader_stem = -1;
+        if (canopy_reader_create(&f->r) != CANOPY_OK || f->r == NULL) {
+            violation(f, "reader_create failed", NULL);
+            return;
+        }
+        check_quiet(f);
+    }
+    f->action = "reader (setting up)";
+    if (f->out && rnd(f, 2)) k = f->out_stem;
+    const int op = rnd(f, 6);
+    /* The files the call could read: the one it opens, or the open one */
+    const int touched = op == 0 || f->reader_stem < 0 ? k : f->reader_stem;
+    path_of(f, touched, ".h5", file_path[0], sizeof file_path[0]);
+    path_of(f, touched, ".xdmf", file_path[1], sizeof file_path[1]);
+    /* The model a load goes into: mostly the fuzzer's, sometimes one of
+     * another structure, rarely none */
+    canopy_model *model = rnd(f, 8) ? f->m : f->spare;
+    if (op >= 3 && rnd(f, 40) == 0) model = NULL;
+    canopy_model *watched = model ? model : f->m;
+
+    reader_image before = {0, 0, NULL, NULL}, after = {0, 0, NULL, NULL};
+    if (!reader_image_take(f->r, &before))
+        violation(f, "a reader getter failed", canopy_reader_message(f->r));
+    if (!snapshot_take(watched, &f->before))
+        violation(f, "a getter failed on a sound model",
+                  canopy_model_message(watched));
+    for (int i = 0; i < 2; ++i)
+        file_image_take(file_path[i], &f->file_before[i]);
+
+    /* The call's arguments */
+    const int index = pick_index(f, before.count);
+    char bad[400];
+    const char *path = f->stem[k];
+    int path_stem = k;
+    if (op == 0 && rnd(f, 6) == 0) {
+        path_stem = -1;
+        switch (rnd(f, 3)) {
+        case 0: path = NULL; break;
+        case 1: path = ""; break;
+        default:
+            snprintf(bad, sizeof bad, "%s/no/such/dir/x", f->dir);
+            path = bad;
+            break;
+        }
+    }
+    double t = pick(f, -1.0, 1.0);
+    if (before.count > 0 && rnd(f, 2)) {
+        t = before.time[rnd(f, before.count)];
+        if (rnd(f, 2)) t += uniform(f, -1e-3, 1e-3);
+    }
+    const double tol = rnd(f, 4) ? uniform(f, 0.0, 1e-3) : pick(f, -1e-3, 1.0);
+    double offset[3];
+    for (int d = 0; d < 3; ++d) offset[d] = rnd(f, 6) ? uniform(f, -5, 5)
+                                                      : pick(f, -5, 5);
+    const int want = canopy_model_node_count(watched);
+    const int n = pick_count(f, want);
+    /* A buffer of 3 n doubles (4 for a count that is absurd), filled with a
+     * pattern a rejection must leave */
+    const size_t cap = n >= 0 && n <= FUZZ_MAX_NODES + 1 ? 3 * (size_t)n + 1
+                                                         : 4;
+    double *forces = malloc(cap * sizeof(double));
+    double *pattern = malloc(cap * sizeof(double));
+    if (forces == NULL || pattern == NULL) {
+        violation(f, "the fuzzer ran out of memory", NULL);
+        free(forces);
+        free(pattern);
+        reader_image_free(&before);
+        return;
+    }
+    memset(pattern, 0x5a, cap * sizeof(double));
+    memcpy(forces, pattern, cap * sizeof(double));
+    int number = -12345, found = -12345;
+    double time = -12345.0;
+
+    set_reader_sentinels(f, model);
+    check_quiet(f);
+    ids_before = hdf5_ids();
+    ++f->c->calls;
+    canopy_status st;
+    switch (op) {
+    case 0:
+        f->action = "reader_open";
+        st = canopy_reader_open(f->r, path);
+        break;
+    case 1:
+        f->action = "reader_step";
+        st = canopy_reader_step(f->r, index, rnd(f, 4) ? &number : NULL,
+                                rnd(f, 4) ? &time : NULL);
+        break;
+    case 2:
+        f->action = "reader_find_step";
+        st = canopy_reader_find_step(f->r, t, tol,
+                                     rnd(f, 30) ? &found : NULL);
+        break;
+    case 3:
+        f->action = "reader_read_state";
+        st = canopy_reader_read_state(f->r, index, model);
+        break;
+    case 4:
+        f->action = "reader_read_motion";
+        st = canopy_reader_read_motion(f->r, index, model,
+                                       rnd(f, 3) ? offset : NULL);
+        break;
+    default:
+        f->action = "reader_get_nodal_forces";
+        st = canopy_reader_get_nodal_forces(f->r, index,
+                                            rnd(f, 30) ? forces : NULL, n);
+        break;
+    }
+
+    /* Whatever the status: quiet, no identifier left, no file written */
+    check_quiet(f);
+    check_hdf5_ids(f);
+    if (hdf5_ids() != ids_before)
+        violation(f, "the reader changed the number of HDF5 identifiers",
+                  NULL);
+    for (int i = 0; i < 2; ++i) {
+        file_image_take(file_path[i], &f->file_after[i]);
+        if (!file_image_same(&f->file_before[i], &f->file_after[i]))
+            violation(f, "a reader call changed the file", file_path[i]);
+    }
+
+    if (st == CANOPY_OK) {
+        const int in_range = index >= 0 && index < before.count;
+        if (op != 0 && op != 2 && !in_range)
+            violation(f, "a step index out of range was accepted", NULL);
+        if (op == 1 && in_range &&
+            ((number != -12345 && number != before.number[index]) ||
+             (time != -12345.0 &&
+              memcmp(&time, &before.time[index], sizeof time) != 0)))
+            violation(f, "reader_step gave another step than the list", NULL);
+        if (op == 2 && found != -12345) check_found(f, &before, t, tol, found);
+        if (op == 4) {
+            snapshot_take(watched, &f->after);
+            if (memcmp(&f->after.t, &f->before.t, sizeof f->after.t) != 0 ||
+                f->after.acc_valid)
+                violation(f, "read_motion changed the time or kept the "
+                          "carried acceleration", NULL);
+        }
+        if (op == 5)
+            for (size_t i = 0; i < 3 * (size_t)n; ++i)
+                if (!isfinite(forces[i])) {
+                    violation(f, "get_nodal_forces gave a value that is not "
+                              "finite", NULL);
+                    break;
+                }
+        if (op != 3 && op != 4) {
+            /* Calls that take no model leave every model alone */
+            snapshot_take(watched, &f->after);
+            const char *d = snapshot_diff(&f->before, &f->after);
+            if (d) violation(f, "a reader call without a model changed the "
+                             "model's", d);
+        }
+        if (!reader_image_take(f->r, &after))
+            violation(f, "a reader getter failed after a call",
+                      canopy_reader_message(f->r));
+        if (op == 0) {
+            /* The new file's steps: sorted by number, finite times */
+            f->reader_stem = path_stem;
+            for (int i = 0; i < after.count; ++i)
+                if (!isfinite(after.time[i]) ||
+                    (i > 0 && after.number[i] <= after.number[i - 1]))
+                    violation(f, "reader_open listed steps out of order or "
+                              "with a time that is not finite", NULL);
+        } else if (!reader_image_same(&before, &after)) {
+            violation(f, "a reader call other than open changed the "
+                      "reader's steps", NULL);
+        }
+    } else {
+        ++f->c->rejections;
+        check_message(f, canopy_reader_message(f->r), st);
+        if (st == CANOPY_ERR_MEMORY && (op == 1 || op == 2))
+            violation(f, "out of memory without reading a file",
+                      canopy_reader_message(f->r));
+        if (model != NULL && (op == 3 || op == 4) &&
+            strstr(canopy_model_message(model), FUZZ_SENTINEL_TEXT) == NULL)
+            violation(f, "a rejected reader call changed the model's message",
+                      canopy_model_message(model));
+        if (memcmp(forces, pattern, cap * sizeof(double)) != 0)
+            violation(f, "a rejected get_nodal_forces wrote its array", NULL);
+        if (!reader_image_take(f->r, &after))
+            violation(f, "a reader getter failed after a rejection",
+                      canopy_reader_message(f->r));
+        if (!reader_image_same(&before, &after))
+            violation(f, "a rejected reader call changed the reader", NULL);
+        snapshot_take(watched, &f->after);
+        const char *d = snapshot_diff(&f->before, &f->after);
+        if (d) violation(f, "a rejected reader call changed the model's", d);
+        if (watched == f->m) check_checkpoint(f);
+    }
+    check_quiet(f);
+    free(forces);
+    free(pattern);
+    reader_image_free(&before);
+    reader_image_free(&after);
+}
+
 static void act_files(fuzz *f)
 {
     const int k = rnd(f, FUZZ_PATHS);
@@ -1201,6 +1497,10 @@ static void act_files(fuzz *f)
     }
     case 4: {
         if (rnd(f, 3) == 0) make_bad_files(f);
+        if (rnd(f, 2)) {
+            act_reader(f, k);
+            break;
+        }
         const int step = rnd(f, 4) ? -1 : pick_index(f, 3);
         before_call(f, "read_state", 2);
         st = canopy_model_read_state(f->m, rnd(f, 30) ? f->stem[k] : "",
@@ -1226,7 +1526,7 @@ static void act_null(fuzz *f)
     ++f->c->calls;
     double d[8] = {0};
     int i[8] = {0};
-    canopy_status st[16];
+    canopy_status st[24];
     int k = 0;
     st[k++] = canopy_model_add_node(NULL, d, 1.0, CANOPY_GROUP_FABRIC, NULL);
     st[k++] = canopy_model_get_positions(NULL, d, 0);
@@ -1242,13 +1542,25 @@ static void act_null(fuzz *f)
     st[k++] = canopy_output_write(NULL, f->m);
     st[k++] = canopy_model_frequency_bound(NULL, d);
     st[k++] = canopy_model_create(NULL);
+    st[k++] = canopy_reader_create(NULL);
+    st[k++] = canopy_reader_open(NULL, f->stem[0]);
+    st[k++] = canopy_reader_step(NULL, 0, i, d);
+    st[k++] = canopy_reader_find_step(NULL, 0.0, 1.0, i);
+    st[k++] = canopy_reader_read_state(NULL, 0, f->m);
+    st[k++] = canopy_reader_read_motion(NULL, 0, f->m, NULL);
+    st[k++] = canopy_reader_get_nodal_forces(NULL, 0, d, 0);
     for (int j = 0; j < k; ++j)
         if (st[j] != CANOPY_ERR_ARGUMENT)
             violation(f, "a NULL handle was not CANOPY_ERR_ARGUMENT", NULL);
     canopy_model_destroy(NULL);
     canopy_output_destroy(NULL);
+    canopy_reader_destroy(NULL);
+    canopy_reader *none = NULL;
+    canopy_reader_destroy(&none);
     if (canopy_model_node_count(NULL) != 0 ||
         canopy_output_step_count(NULL) != 0 ||
+        canopy_reader_step_count(NULL) != 0 ||
+        canopy_reader_message(NULL)[0] == '\0' ||
         canopy_model_memory_bytes(NULL) != 0 ||
         canopy_model_message(NULL)[0] == '\0' ||
         canopy_output_message(NULL)[0] == '\0' ||
@@ -1308,6 +1620,16 @@ static void on_death(void)
             f->c->rejections, f->c->violations);
     fflush(f->report);
 }
+
+/* UndefinedBehaviorSanitizer has a runtime of its own, which does not call
+ * the death callback: fuzz_main.c has it abort instead, and the abort is
+ * reported here the same way. */
+static void on_abort(int sig)
+{
+    on_death();
+    signal(sig, SIG_DFL);
+    raise(sig);
+}
 #endif
 
 static void remove_dir(fuzz *f)
@@ -1317,6 +1639,8 @@ static void remove_dir(fuzz *f)
         snprintf(path, sizeof path, "%s.h5", f->stem[k]);
         unlink(path);
         snprintf(path, sizeof path, "%s.xdmf", f->stem[k]);
+        unlink(path);
+        snprintf(path, sizeof path, "%s-frame.xdmf", f->stem[k]);
         unlink(path);
     }
     rmdir(f->dir);
@@ -1368,7 +1692,20 @@ int canopy_fuzz_run(unsigned long long seed, long calls, FILE *report,
     active = &f;
 #if defined(__SANITIZE_ADDRESS__)
     __sanitizer_set_death_callback(on_death);
+    signal(SIGABRT, on_abort);
 #endif
+    f.reader_stem = -1;
+    if (canopy_model_create(&f.spare) != CANOPY_OK) {
+        violation(&f, "canopy_model_create failed", NULL);
+    } else {
+        canopy_rectangle_spec s = canopy_rectangle_spec_default();
+        s.width = 0.5;
+        s.length = 0.3;
+        s.edge_length = 0.1;
+        if (canopy_build_rectangle(f.spare, &s) != CANOPY_OK)
+            violation(&f, "build_rectangle of the spare model failed",
+                      canopy_model_message(f.spare));
+    }
     new_model(&f);
     make_bad_files(&f);
     while (counts->calls < calls && f.m != NULL) {
@@ -1390,10 +1727,13 @@ int canopy_fuzz_run(unsigned long long seed, long calls, FILE *report,
         }
     }
     destroy_output(&f);
+    canopy_reader_destroy(&f.r);
     canopy_model_destroy(&f.m);
+    canopy_model_destroy(&f.spare);
     check_quiet(&f);
 #if defined(__SANITIZE_ADDRESS__)
     __sanitizer_set_death_callback(NULL);
+    signal(SIGABRT, SIG_DFL);
 #endif
     active = NULL;
     fflush(stdout);
@@ -1406,7 +1746,7 @@ int canopy_fuzz_run(unsigned long long seed, long calls, FILE *report,
     snapshot_free(&f.before);
     snapshot_free(&f.after);
     snapshot_free(&f.ckpt);
-    for (int i = 0; i < 2; ++i) {
+    for (int i = 0; i < 3; ++i) {
         file_image_free(&f.file_before[i]);
         file_image_free(&f.file_after[i]);
     }

@@ -31,6 +31,15 @@ const char *__asan_default_options(void)
 {
     return "allocator_may_return_null=1";
 }
+
+/* UndefinedBehaviorSanitizer: abort after a report (fuzz_api.c reports the
+ * abort with the call it happened in; exiting would lose the report, which
+ * went to the captured stderr). */
+const char *__ubsan_default_options(void);
+const char *__ubsan_default_options(void)
+{
+    return "abort_on_error=1";
+}
 #endif
 
 static int usage(void)

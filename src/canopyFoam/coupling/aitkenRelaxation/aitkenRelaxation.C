@@ -3,6 +3,53 @@
 \*---------------------------------------------------------------------------*/
 
 #include "aitkenRelaxation.H"
+#include "addToRunTimeSelectionTable.H"
+#include "readEntry.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(aitkenRelaxation, 0);
+    addToRunTimeSelectionTable
+    (
+        interfaceAcceleration,
+        aitkenRelaxation,
+        dictionary
+    );
+}
+
+
+// * * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
+
+namespace
+{
+
+// maxRelaxation, checked to lie in [omega0, 1]
+Foam::scalar readMaxRelaxation
+(
+    const Foam::dictionary& dict,
+    const Foam::scalar omega0
+)
+{
+    const Foam::scalar omegaMax = Foam::canopyEntry::number
+    (
+        dict, "maxRelaxation", "coupling.maxRelaxation", 1
+    );
+    if (omegaMax > 1 || omegaMax < omega0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'coupling.maxRelaxation' = " << omegaMax
+            << " must lie in [initialRelaxation, 1] = [" << omega0
+            << ", 1]" << Foam::exit(Foam::FatalIOError);
+    }
+    return omegaMax;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::aitkenRelaxation::aitkenRelaxation
 (
@@ -17,6 +64,22 @@ Foam::aitkenRelaxation::aitkenRelaxation
     omega_(omega0),
     previousResidual_()
 {}
+
+
+Foam::aitkenRelaxation::aitkenRelaxation
+(
+    const dictionary& coupling,
+    const scalar omega0
+)
+:
+    aitkenRelaxation
+    (
+        omega0, min(0.05, omega0), readMaxRelaxation(coupling, omega0)
+    )
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 
 void Foam::aitkenRelaxation::reset()

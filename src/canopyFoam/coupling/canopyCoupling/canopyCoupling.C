@@ -704,23 +704,22 @@ Foam::canopyCoupling::canopyCoupling
     }
 
     // A restart continues from the structure's state at the start time
+    // (canopyStructure::startsFrom decides; the constructor has read an
+    // initial state otherwise)
     const Time& runTime = mesh.time();
-    if (runTime.value() != 0)
+    if (structure_.startsFrom(runTime) == canopyStructure::origin::restart)
     {
-        if (structure_.stateAvailable(runTime))
-        {
-            Info<< "canopyCoupling: restarting the structure from its state"
-                << " at t = " << runTime.timeName() << " in "
-                << canopyStructure::outputPath(runTime) << ".h5" << endl;
-            structure_.readState(runTime);
-        }
-        else
-        {
-            WarningInFunction
-                << "No structure state at the start time " << runTime.timeName()
-                << " in " << canopyStructure::outputPath(runTime) << ".h5:"
-                << " the canopy starts from its initial shape" << endl;
-        }
+        Info<< "canopyCoupling: restarting the structure from its state"
+            << " at t = " << runTime.timeName() << " in "
+            << canopyStructure::outputPath(runTime) << ".h5" << endl;
+        structure_.readState(runTime);
+    }
+    else if (runTime.value() != 0)
+    {
+        WarningInFunction
+            << "No structure state at the start time " << runTime.timeName()
+            << " in " << canopyStructure::outputPath(runTime) << ".h5:"
+            << " the canopy starts from its initial shape" << endl;
     }
 
     // The triangles' subdivision: a restart's own (so that its markers

@@ -6,6 +6,59 @@
 #include "interfaceQuasiNewton.H"
 #include "UPtrList.H"
 #include "SubList.H"
+#include "addToRunTimeSelectionTable.H"
+#include "readEntry.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(interfaceQuasiNewton, 0);
+    addToRunTimeSelectionTable
+    (
+        interfaceAcceleration,
+        interfaceQuasiNewton,
+        dictionary
+    );
+}
+
+
+// * * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
+
+namespace
+{
+
+// reuse, checked to be >= 0
+Foam::label readReuse(const Foam::dictionary& dict)
+{
+    const Foam::label reuse =
+        Foam::canopyEntry::integer(dict, "reuse", "coupling.reuse", 8);
+    if (reuse < 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'coupling.reuse' = " << reuse << " must be >= 0"
+            << Foam::exit(Foam::FatalIOError);
+    }
+    return reuse;
+}
+
+
+// filter, checked to lie in (0, 1)
+Foam::scalar readFilter(const Foam::dictionary& dict)
+{
+    const Foam::scalar filter =
+        Foam::canopyEntry::number(dict, "filter", "coupling.filter", 1e-3);
+    if (!(filter > 0) || !(filter < 1))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'coupling.filter' = " << filter
+            << " must lie in (0, 1)" << Foam::exit(Foam::FatalIOError);
+    }
+    return filter;
+}
+
+} // End anonymous namespace
+
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -103,6 +156,19 @@ Foam::interfaceQuasiNewton::interfaceQuasiNewton
     columnsUsed_(0),
     columnsDropped_(0)
 {}
+
+
+Foam::interfaceQuasiNewton::interfaceQuasiNewton
+(
+    const dictionary& coupling,
+    const scalar omega0
+)
+:
+    // reuse is read (and checked) before filter
+    interfaceQuasiNewton(omega0, readReuse(coupling), 0)
+{
+    filter_ = readFilter(coupling);
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //

@@ -170,17 +170,9 @@ Foam::canopyStructure::canopyStructure
 
     // The initial state (e.g. a folded canopy), unless the run restarts
     // from the structure's own output (which canopyCoupling then reads)
-    if (useInitialState)
+    if (useInitialState && startsFrom(runTime) == origin::initialState)
     {
-        const fileName h5(initialStateFile(runTime));
-        if
-        (
-            !h5.empty()
-         && (runTime.value() == 0 || !stateAvailable(runTime))
-        )
-        {
-            readInitialState(h5);
-        }
+        readInitialState(initialStateFile(runTime));
     }
 }
 

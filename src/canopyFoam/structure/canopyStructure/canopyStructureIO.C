@@ -11,19 +11,18 @@ License
     is distributed under the GNU General Public License version 3 or later.
 
 Description
-    Writing goes through canopy_output (canopy.h). To restart at a given
-    time, the step holding that time is looked up in the file's documented
-    layout (/steps/NNNNNN groups with a scalar attribute 'time') with the
-    HDF5 C library, read-only, and then loaded with
-    canopy_model_read_state. In parallel the master also reads that step's
-    nodal forces (/steps/NNNNNN/f_ext), which libcanopy has no getter for,
-    and broadcasts the whole state.
+    Writing goes through canopy_output, reading through canopy_reader
+    (canopy.h); this file knows nothing of the HDF5 layout. To restart at
+    a given time, the master finds the step nearest that time within the
+    tolerance (canopy_reader_find_step) and loads it
+    (canopy_reader_read_state, which checks that the file holds this
+    structure); in parallel it also takes the step's nodal forces
+    (canopy_reader_get_nodal_forces) and broadcasts the whole state.
 
     The initial state (entry initialState, e.g. a folded canopy written by
-    canopyFold) is read the same way, with the HDF5 C library from the
-    documented layout: /mesh attributes nodes, springs, triangles;
-    /mesh/triangles, /mesh/springs and /mesh/spring_rest_length to check
-    that the file holds this structure; x and v of the last /steps group.
+    canopyFold) is the last step's positions and velocities, the latter
+    plus initialVelocity (canopy_reader_read_motion, with the same
+    structure checks), read on the master and broadcast.
 
 \*---------------------------------------------------------------------------*/
 
@@ -34,452 +33,64 @@ Description
 #include "Pstream.H"
 
 #include "canopy.h"
-#include <hdf5.h>
 
-#include <cmath>
+#include <cstdio>
 #include <string>
-#include <vector>
 
-// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * * //
+// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
 
 namespace
 {
 
-// HDF5's automatic error printing off for the lifetime of the object
-class hdf5Quiet
+// A canopy_reader, destroyed with the object
+class outputReader
 {
-    H5E_auto2_t func_;
-    void* data_;
+    canopy_reader* reader_;
 
 public:
 
-    hdf5Quiet()
+    outputReader()
     :
-        func_(nullptr),
-        data_(nullptr)
+        reader_(nullptr)
     {
-        H5Eget_auto2(H5E_DEFAULT, &func_, &data_);
-        H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+        if (canopy_reader_create(&reader_) != CANOPY_OK)
+        {
+            FatalErrorInFunction
+                << "libcanopy cannot make a reader (out of memory)"
+                << Foam::exit(Foam::FatalError);
+        }
     }
 
-    ~hdf5Quiet()
+    ~outputReader()
     {
-        H5Eset_auto2(H5E_DEFAULT, func_, data_);
+        canopy_reader_destroy(&reader_);
     }
 
-    hdf5Quiet(const hdf5Quiet&) = delete;
-    void operator=(const hdf5Quiet&) = delete;
+    outputReader(const outputReader&) = delete;
+    void operator=(const outputReader&) = delete;
+
+    canopy_reader* get() const { return reader_; }
+
+    std::string message() const
+    {
+        return canopy_reader_message(reader_);
+    }
 };
 
 
-// An open HDF5 object, closed with the given function
-class hdf5Handle
+// The group name NNNNNN of step number `number`
+std::string stepGroupName(const int number)
 {
-    hid_t id_;
-    herr_t (*close_)(hid_t);
-
-public:
-
-    hdf5Handle(hid_t id, herr_t (*close)(hid_t))
-    :
-        id_(id),
-        close_(close)
-    {}
-
-    ~hdf5Handle()
-    {
-        if (id_ >= 0) close_(id_);
-    }
-
-    hdf5Handle(const hdf5Handle&) = delete;
-    void operator=(const hdf5Handle&) = delete;
-
-    hid_t id() const { return id_; }
-    bool valid() const { return id_ >= 0; }
-};
-
-
-struct outputStep
-{
-    std::string name;   // NNNNNN
-    int number;
-    double time;
-};
-
-
-// Open path.h5 read-only (no file locking, as libcanopy does, so a file
-// open for writing elsewhere can be read)
-hid_t openReadOnly(const std::string& h5)
-{
-    hid_t fapl = H5Pcreate(H5P_FILE_ACCESS);
-    if (fapl < 0) return -1;
-#if H5_VERSION_GE(1, 10, 7)
-    H5Pset_file_locking(fapl, 0, 1);
-#endif
-    const hid_t file = H5Fopen(h5.c_str(), H5F_ACC_RDONLY, fapl);
-    H5Pclose(fapl);
-    return file;
+    char name[32];
+    std::snprintf(name, sizeof(name), "%06d", number);
+    return name;
 }
 
 
-// The steps of an output file (name, number, time); false with a message
-// when the file cannot be read
-bool listSteps
-(
-    const std::string& h5,
-    std::vector<outputStep>& steps,
-    std::string& message
-)
+// path.h5 -> path, the form libcanopy takes
+std::string withoutH5(const Foam::fileName& h5)
 {
-    steps.clear();
-    const hdf5Quiet quiet;
-
-    if (!Foam::isFile(h5))
-    {
-        message = "'" + h5 + "' does not exist";
-        return false;
-    }
-    const hdf5Handle file(openReadOnly(h5), H5Fclose);
-    if (!file.valid())
-    {
-        message = "cannot open '" + h5 + "' (unreadable or not HDF5)";
-        return false;
-    }
-    if (H5Lexists(file.id(), "steps", H5P_DEFAULT) <= 0)
-    {
-        return true;    // no steps yet
-    }
-    const hdf5Handle group(H5Gopen2(file.id(), "steps", H5P_DEFAULT), H5Gclose);
-    H5G_info_t info;
-    if (!group.valid() || H5Gget_info(group.id(), &info) < 0)
-    {
-        message = "cannot list /steps in '" + h5 + "'";
-        return false;
-    }
-    for (hsize_t i = 0; i < info.nlinks; ++i)
-    {
-        char name[64];
-        const ssize_t len = H5Lget_name_by_idx
-        (
-            group.id(), ".", H5_INDEX_NAME, H5_ITER_INC, i, name,
-            sizeof(name), H5P_DEFAULT
-        );
-        if (len <= 0 || len >= ssize_t(sizeof(name)) || len > 9)
-        {
-            continue;
-        }
-        bool digits = true;
-        int number = 0;
-        for (ssize_t c = 0; c < len; ++c)
-        {
-            digits = digits && name[c] >= '0' && name[c] <= '9';
-            number = 10*number + (name[c] - '0');
-        }
-        if (!digits)
-        {
-            continue;   // not a step group
-        }
-        const hdf5Handle step(H5Gopen2(group.id(), name, H5P_DEFAULT), H5Gclose);
-        double t = 0;
-        bool ok = false;
-        if (step.valid())
-        {
-            const hdf5Handle attr(H5Aopen(step.id(), "time", H5P_DEFAULT), H5Aclose);
-            ok = attr.valid()
-              && H5Aread(attr.id(), H5T_NATIVE_DOUBLE, &t) >= 0;
-        }
-        if (!ok)
-        {
-            message =
-                "'" + h5 + "': /steps/" + name + " has no readable attribute"
-                " 'time'";
-            return false;
-        }
-        steps.push_back(outputStep{std::string(name), number, t});
-    }
-    return true;
-}
-
-
-// The n x 3 dataset /steps/<name>/f_ext
-bool readNodalForces
-(
-    const std::string& h5,
-    const std::string& stepName,
-    const int n,
-    std::vector<double>& f,
-    std::string& message
-)
-{
-    const hdf5Quiet quiet;
-    const std::string path = "/steps/" + stepName + "/f_ext";
-    f.assign(3*std::size_t(n), 0.0);
-    const hdf5Handle file(openReadOnly(h5), H5Fclose);
-    const hdf5Handle set
-    (
-        file.valid() ? H5Dopen2(file.id(), path.c_str(), H5P_DEFAULT) : -1,
-        H5Dclose
-    );
-    if (!set.valid())
-    {
-        message = "cannot open " + path + " in '" + h5 + "'";
-        return false;
-    }
-    const hdf5Handle space(H5Dget_space(set.id()), H5Sclose);
-    hsize_t dims[2] = {0, 0};
-    if
-    (
-        !space.valid()
-     || H5Sget_simple_extent_ndims(space.id()) != 2
-     || H5Sget_simple_extent_dims(space.id(), dims, nullptr) != 2
-     || dims[0] != hsize_t(n) || dims[1] != 3
-    )
-    {
-        message = path + " in '" + h5 + "' is not " + std::to_string(n) + " x 3";
-        return false;
-    }
-    if
-    (
-        n > 0
-     && H5Dread
-        (
-            set.id(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT,
-            f.data()
-        ) < 0
-    )
-    {
-        message = "cannot read " + path + " in '" + h5 + "'";
-        return false;
-    }
-    return true;
-}
-
-
-// A dataset of rows x cols (cols 0: one-dimensional) of the given memory
-// type (H5T_NATIVE_DOUBLE or H5T_NATIVE_INT), read whole into data
-template<class T>
-bool readDataset
-(
-    const hid_t file,
-    const std::string& h5,
-    const std::string& path,
-    const hid_t memType,
-    const hsize_t rows,
-    const hsize_t cols,
-    std::vector<T>& data,
-    std::string& message
-)
-{
-    data.assign(std::size_t(rows*(cols > 0 ? cols : 1)), T(0));
-    const hdf5Handle set(H5Dopen2(file, path.c_str(), H5P_DEFAULT), H5Dclose);
-    if (!set.valid())
-    {
-        message = "'" + h5 + "' has no dataset " + path;
-        return false;
-    }
-    const hdf5Handle space(H5Dget_space(set.id()), H5Sclose);
-    const int rank = cols > 0 ? 2 : 1;
-    hsize_t dims[2] = {0, 0};
-    if
-    (
-        !space.valid()
-     || H5Sget_simple_extent_ndims(space.id()) != rank
-     || H5Sget_simple_extent_dims(space.id(), dims, nullptr) != rank
-     || dims[0] != rows
-     || (cols > 0 && dims[1] != cols)
-    )
-    {
-        message =
-            "'" + h5 + "': " + path + " is not "
-          + std::to_string(rows)
-          + (cols > 0 ? " x " + std::to_string(cols) : " values");
-        return false;
-    }
-    if
-    (
-        rows > 0
-     && H5Dread(set.id(), memType, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data())
-      < 0
-    )
-    {
-        message = "cannot read " + path + " in '" + h5 + "'";
-        return false;
-    }
-    return true;
-}
-
-
-// An integer attribute of the object at path (e.g. /mesh nodes)
-bool readIntAttribute
-(
-    const hid_t file,
-    const std::string& h5,
-    const std::string& path,
-    const char* name,
-    int& value,
-    std::string& message
-)
-{
-    const hdf5Handle obj(H5Oopen(file, path.c_str(), H5P_DEFAULT), H5Oclose);
-    const hdf5Handle attr
-    (
-        obj.valid() ? H5Aopen(obj.id(), name, H5P_DEFAULT) : -1,
-        H5Aclose
-    );
-    if (!attr.valid() || H5Aread(attr.id(), H5T_NATIVE_INT, &value) < 0)
-    {
-        message =
-            "'" + h5 + "' has no readable attribute '" + name + "' on "
-          + path;
-        return false;
-    }
-    return true;
-}
-
-
-// The state of the last step of an output file, checked against the
-// model: counts, spring ends, triangles and rest lengths. Positions and
-// velocities in x and v (3 n each); false with a message.
-bool readLastState
-(
-    const canopy_model* m,
-    const std::string& h5,
-    std::vector<double>& x,
-    std::vector<double>& v,
-    std::string& stepName,
-    double& stepTime,
-    std::string& message
-)
-{
-    std::vector<outputStep> steps;
-    if (!listSteps(h5, steps, message))
-    {
-        return false;
-    }
-    if (steps.empty())
-    {
-        message = "'" + h5 + "' holds no steps";
-        return false;
-    }
-
-    const hdf5Quiet quiet;
-    const hdf5Handle file(openReadOnly(h5), H5Fclose);
-    if (!file.valid())
-    {
-        message = "cannot open '" + h5 + "' (unreadable or not HDF5)";
-        return false;
-    }
-
-    // Counts
-    const int n = canopy_model_node_count(m);
-    const int ns = canopy_model_spring_count(m);
-    const int nt = canopy_model_triangle_count(m);
-    const struct { const char* name; int model; } counts[] =
-    {
-        {"nodes", n}, {"springs", ns}, {"triangles", nt}
-    };
-    for (const auto& c : counts)
-    {
-        int inFile = -1;
-        if (!readIntAttribute(file.id(), h5, "/mesh", c.name, inFile, message))
-        {
-            return false;
-        }
-        if (inFile != c.model)
-        {
-            message =
-                "'" + h5 + "' does not hold this structure: "
-              + std::to_string(inFile) + " " + c.name + " in the file, "
-              + std::to_string(c.model) + " in the model built from the "
-                "dictionary";
-            return false;
-        }
-    }
-
-    // Connectivity and rest lengths
-    std::vector<int> tri(3*std::size_t(nt)), ends(2*std::size_t(ns));
-    std::vector<double> rest(ns);
-    canopy_model_get_triangles(m, tri.data(), nt);
-    canopy_model_get_springs(m, ends.data(), rest.data(), nullptr, ns);
-
-    std::vector<int> triFile, endsFile;
-    std::vector<double> restFile;
-    if
-    (
-        !readDataset(file.id(), h5, "/mesh/triangles", H5T_NATIVE_INT,
-            nt, 3, triFile, message)
-     || !readDataset(file.id(), h5, "/mesh/springs", H5T_NATIVE_INT,
-            ns, 2, endsFile, message)
-     || !readDataset(file.id(), h5, "/mesh/spring_rest_length",
-            H5T_NATIVE_DOUBLE, ns, 0, restFile, message)
-    )
-    {
-        return false;
-    }
-    for (std::size_t i = 0; i < tri.size(); ++i)
-    {
-        if (tri[i] != triFile[i])
-        {
-            message =
-                "'" + h5 + "' does not hold this structure: triangle "
-              + std::to_string(i/3) + " has other vertices in the file";
-            return false;
-        }
-    }
-    for (std::size_t i = 0; i < ends.size(); ++i)
-    {
-        if (ends[i] != endsFile[i])
-        {
-            message =
-                "'" + h5 + "' does not hold this structure: spring "
-              + std::to_string(i/2) + " joins other nodes in the file";
-            return false;
-        }
-    }
-    for (int k = 0; k < ns; ++k)
-    {
-        if (!(std::abs(rest[k] - restFile[k]) <= 1e-9*rest[k]))
-        {
-            Foam::OStringStream os;
-            os  << "'" << h5.c_str() << "' does not hold this structure: the"
-                << " rest length of spring " << k << " is " << restFile[k]
-                << " m in the file, " << rest[k] << " m in the model (was"
-                << " it written for another canopy size or edge length?)";
-            message = os.str();
-            return false;
-        }
-    }
-
-    // The last step (highest number)
-    std::size_t last = 0;
-    for (std::size_t s = 1; s < steps.size(); ++s)
-    {
-        if (steps[s].number > steps[last].number) last = s;
-    }
-    stepName = steps[last].name;
-    stepTime = steps[last].time;
-    const std::string group = "/steps/" + stepName;
-    if
-    (
-        !readDataset(file.id(), h5, group + "/x", H5T_NATIVE_DOUBLE, n, 3,
-            x, message)
-     || !readDataset(file.id(), h5, group + "/v", H5T_NATIVE_DOUBLE, n, 3,
-            v, message)
-    )
-    {
-        return false;
-    }
-    for (std::size_t i = 0; i < x.size(); ++i)
-    {
-        if (!std::isfinite(x[i]) || !std::isfinite(v[i]))
-        {
-            message =
-                "'" + h5 + "': " + group + " holds a value that is not"
-                " finite (node " + std::to_string(i/3) + ")";
-            return false;
-        }
-    }
-    return true;
+    return h5.hasExt("h5") ? h5.lessExt() : h5;
 }
 
 } // End anonymous namespace
@@ -504,54 +115,22 @@ Foam::label Foam::canopyStructure::findStep
     std::string& message
 ) const
 {
-    std::vector<outputStep> steps;
-    if (!listSteps(h5, steps, message))
+    const outputReader reader;
+    int index = -1, number = -1;
+    double time = 0;
+    if
+    (
+        canopy_reader_open(reader.get(), withoutH5(h5).c_str()) != CANOPY_OK
+     || canopy_reader_find_step(reader.get(), t, tol, &index) != CANOPY_OK
+     || canopy_reader_step(reader.get(), index, &number, &time) != CANOPY_OK
+    )
     {
+        message = reader.message();
         return -1;
     }
-    label best = -1;
-    for (std::size_t s = 0; s < steps.size(); ++s)
-    {
-        if
-        (
-            mag(steps[s].time - t) <= tol
-         && (best < 0 || mag(steps[s].time - t) < mag(steps[best].time - t))
-        )
-        {
-            best = label(s);
-        }
-    }
-    if (best < 0)
-    {
-        OStringStream os;
-        os  << "'" << h5.c_str() << "' holds no step at time " << t
-            << " (tolerance " << tol << "); ";
-        if (steps.empty())
-        {
-            os  << "it holds no steps";
-        }
-        else
-        {
-            scalar tMin = steps[0].time, tMax = steps[0].time;
-            label nearest = 0;
-            for (std::size_t s = 0; s < steps.size(); ++s)
-            {
-                tMin = min(tMin, steps[s].time);
-                tMax = max(tMax, steps[s].time);
-                if (mag(steps[s].time - t) < mag(steps[nearest].time - t))
-                {
-                    nearest = label(s);
-                }
-            }
-            os  << steps.size() << " steps from t = " << tMin << " to "
-                << tMax << ", the nearest at t = " << steps[nearest].time;
-        }
-        message = os.str();
-        return -1;
-    }
-    stepTime = steps[best].time;
-    stepName = steps[best].name;
-    return steps[best].number;
+    stepTime = time;
+    stepName = stepGroupName(number);
+    return number;
 }
 
 
@@ -709,39 +288,47 @@ void Foam::canopyStructure::readState
 
     if (Pstream::master())
     {
-        std::string stepName, findMessage;
-        const label number =
-            findStep(h5, t, tol, stepTime, stepName, findMessage);
-        if (number < 0)
-        {
-            ok = false;
-            message = "cannot restart the structure at time "
-                + Foam::name(t) + ": " + findMessage;
-        }
-        else if
+        const outputReader reader;
+        int index = -1, number = -1;
+        double foundTime = 0;
+        if
         (
-            canopy_model_read_state(model_.get(), path.c_str(), number)
+            canopy_reader_open(reader.get(), path.c_str()) != CANOPY_OK
+         || canopy_reader_find_step(reader.get(), t, tol, &index) != CANOPY_OK
+         || canopy_reader_step(reader.get(), index, &number, &foundTime)
          != CANOPY_OK
         )
         {
             ok = false;
             message = "cannot restart the structure at time "
-                + Foam::name(t) + " from step " + stepName + " of '" + h5
-                + "': " + canopy_model_message(model_.get());
+                + Foam::name(t) + ": " + reader.message();
         }
-        else if (!openOutput(path, CANOPY_OUTPUT_APPEND, message))
+        else if
+        (
+            canopy_reader_read_state(reader.get(), index, model_.get())
+         != CANOPY_OK
+        )
         {
             ok = false;
+            message = "cannot restart the structure at time "
+                + Foam::name(t) + " from step " + stepGroupName(number)
+                + " of '" + h5 + "': " + reader.message();
         }
         else if (Pstream::parRun())
         {
             // The state to broadcast: what read_state loaded
-            std::vector<double> fExt;
-            std::string fMessage;
-            if (!readNodalForces(h5, stepName, n, fExt, fMessage))
+            f.setSize(3*n);
+            if
+            (
+                canopy_reader_get_nodal_forces
+                (
+                    reader.get(), index, f.begin(), n
+                )
+             != CANOPY_OK
+            )
             {
                 ok = false;
-                message = "cannot restart the structure: " + fMessage;
+                message = "cannot restart the structure: " + reader.message();
             }
             else
             {
@@ -749,11 +336,6 @@ void Foam::canopyStructure::readState
                 v.setSize(3*n);
                 acc.setSize(3*n);
                 dp.setSize(nt);
-                f.setSize(3*n);
-                forAll(f, i)
-                {
-                    f[i] = fExt[i];
-                }
                 int valid = 0;
                 check
                 (
@@ -785,6 +367,10 @@ void Foam::canopyStructure::readState
         else
         {
             stepTime = time();
+        }
+        if (ok && !openOutput(path, CANOPY_OUTPUT_APPEND, message))
+        {
+            ok = false;
         }
     }
 
@@ -838,6 +424,21 @@ void Foam::canopyStructure::readState
 
     Info<< "canopyStructure: restarted from " << h5 << " at time "
         << stepTime << endl;
+}
+
+
+Foam::canopyStructure::origin Foam::canopyStructure::startsFrom
+(
+    const Time& runTime
+) const
+{
+    // The entry is checked first, whatever the run starts from
+    const bool haveFile = !initialStateFile(runTime).empty();
+    if (runTime.value() != 0 && stateAvailable(runTime))
+    {
+        return origin::restart;
+    }
+    return haveFile ? origin::initialState : origin::built;
 }
 
 
@@ -896,30 +497,68 @@ void Foam::canopyStructure::readInitialState(const fileName& h5)
 
     if (Pstream::master())
     {
-        std::vector<double> xs, vs;
-        std::string name, why;
+        // The last step's positions, and its velocities with initialVelocity
+        // on top, checked against this structure by libcanopy
+        const outputReader reader;
+        const double offset[3] =
+        {
+            initialVelocity_.x(), initialVelocity_.y(), initialVelocity_.z()
+        };
+        int number = -1;
         double t = 0;
         if (!isFile(h5))
         {
             ok = false;
             message = "'" + h5 + "' does not exist (run canopyFold first?)";
         }
-        else if (!readLastState(model_.get(), h5, xs, vs, name, t, why))
+        else if
+        (
+            canopy_reader_open(reader.get(), withoutH5(h5).c_str())
+         != CANOPY_OK
+        )
         {
             ok = false;
-            message = why;
+            message = reader.message();
+        }
+        else if (canopy_reader_step_count(reader.get()) == 0)
+        {
+            ok = false;
+            message = "'" + h5 + "' holds no steps";
         }
         else
         {
-            x.setSize(3*n);
-            v.setSize(3*n);
-            forAll(x, i)
+            const int last = canopy_reader_step_count(reader.get()) - 1;
+            if
+            (
+                canopy_reader_step(reader.get(), last, &number, &t)
+             != CANOPY_OK
+             || canopy_reader_read_motion
+                (
+                    reader.get(), last, model_.get(), offset
+                )
+             != CANOPY_OK
+            )
             {
-                x[i] = xs[i];
-                v[i] = vs[i];
+                ok = false;
+                message = reader.message();
             }
-            stepTime = t;
-            stepName = name;
+            else
+            {
+                x.setSize(3*n);
+                v.setSize(3*n);
+                check
+                (
+                    canopy_model_get_positions(model_.get(), x.begin(), n),
+                    FUNCTION_NAME, "canopy_model_get_positions"
+                );
+                check
+                (
+                    canopy_model_get_velocities(model_.get(), v.begin(), n),
+                    FUNCTION_NAME, "canopy_model_get_velocities"
+                );
+                stepTime = t;
+                stepName = stepGroupName(number);
+            }
         }
     }
 
@@ -936,26 +575,20 @@ void Foam::canopyStructure::readInitialState(const fileName& h5)
     Pstream::scatter(stepTime);
     Pstream::scatter(stepName);
 
-    // initialVelocity comes on top of the state's velocities
-    for (label i = 0; i < n; ++i)
+    if (!Pstream::master())
     {
-        for (direction d = 0; d < 3; ++d)
-        {
-            v[3*i + d] += initialVelocity_[d];
-        }
+        canopy_model* m = model_.get();
+        check
+        (
+            canopy_model_set_positions(m, x.cdata(), n),
+            FUNCTION_NAME, "canopy_model_set_positions"
+        );
+        check
+        (
+            canopy_model_set_velocities(m, v.cdata(), n),
+            FUNCTION_NAME, "canopy_model_set_velocities"
+        );
     }
-
-    canopy_model* m = model_.get();
-    check
-    (
-        canopy_model_set_positions(m, x.cdata(), n),
-        FUNCTION_NAME, "canopy_model_set_positions"
-    );
-    check
-    (
-        canopy_model_set_velocities(m, v.cdata(), n),
-        FUNCTION_NAME, "canopy_model_set_velocities"
-    );
 
     if (!identicalOnAllRanks())
     {
