@@ -29,7 +29,9 @@ void Foam::aitkenRelaxation::reset()
 void Foam::aitkenRelaxation::relax
 (
     scalarField& x,
-    const scalarField& target
+    const scalarField& target,
+    scalarField& s,
+    const scalarField& sTarget
 )
 {
     const scalarField r(target - x);
@@ -50,6 +52,7 @@ void Foam::aitkenRelaxation::relax
     }
 
     x += omega_*r;
+    s += omega_*(sTarget - s);
     previousResidual_ = r;
 }
 
