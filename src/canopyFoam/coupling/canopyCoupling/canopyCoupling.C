@@ -1216,11 +1216,11 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
     {
         converged_ = residual_ < tolerance_;
         stop = converged_;
-        // The stabiliser's balance and the no-slip velocity move with the
-        // normal velocity (the same factor or combination of columns), so
-        // that the next evaluation is of one map of the relaxed state
-        // (interfaceAcceleration.H); the stabiliser's balance is that
-        // state's, and cancels at convergence as before
+        // The stabiliser's balance and the no-slip velocity are the
+        // acceleration's secondary data (interfaceAcceleration.H: IQN-ILS
+        // moves them with its columns, Aitken hands them the last solve's);
+        // on convergence they are the last solve's, so the balance cancels
+        // as before
         vectorField balance(addedMass_->balanceAcceleration());
         scalarField secondary(packVectors(balanceUsed, triangleVelocityUsed));
         acceleration_->relax
