@@ -163,6 +163,22 @@ void Foam::addedMassStabiliser::update
 }
 
 
+void Foam::addedMassStabiliser::setBalanceAcceleration
+(
+    const vectorField& balance
+)
+{
+    if (balance.size() != balanceAcceleration_.size())
+    {
+        FatalErrorInFunction
+            << "The balancing acceleration has " << balance.size()
+            << " values, the stabiliser acts on "
+            << balanceAcceleration_.size() << " nodes" << exit(FatalError);
+    }
+    balanceAcceleration_ = balance;
+}
+
+
 void Foam::addedMassStabiliser::restart
 (
     const dictionary& state,

@@ -62,6 +62,52 @@ bool readSwitch
 }
 
 
+// The components of vector fields one after another: the secondary data
+// of the interface acceleration (interfaceAcceleration.H)
+Foam::scalarField packVectors
+(
+    const Foam::vectorField& a,
+    const Foam::vectorField& b
+)
+{
+    Foam::scalarField s(3*(a.size() + b.size()));
+    Foam::label i = 0;
+    for (const Foam::vectorField* f : {&a, &b})
+    {
+        for (const Foam::vector& v : *f)
+        {
+            for (Foam::direction d = 0; d < 3; ++d)
+            {
+                s[i++] = v[d];
+            }
+        }
+    }
+    return s;
+}
+
+
+// The inverse of packVectors (a and b keep their sizes)
+void unpackVectors
+(
+    const Foam::scalarField& s,
+    Foam::vectorField& a,
+    Foam::vectorField& b
+)
+{
+    Foam::label i = 0;
+    for (Foam::vectorField* f : {&a, &b})
+    {
+        for (Foam::vector& v : *f)
+        {
+            for (Foam::direction d = 0; d < 3; ++d)
+            {
+                v[d] = s[i++];
+            }
+        }
+    }
+}
+
+
 } // End anonymous namespace
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -1098,6 +1144,12 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
         tangentialNodal = mk.toNodes(tangential);
     }
 
+    // The secondary part of the iterate this solve reads (besides the
+    // normal velocity): the stabiliser's balancing acceleration and the
+    // no-slip velocity the forcing used
+    const vectorField balanceUsed(addedMass_->balanceAcceleration());
+    const vectorField triangleVelocityUsed(triangleVelocity_);
+
     label substeps = 0;
     string message;
     bool advanced = false;
@@ -1161,9 +1213,25 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
     const label worst = findMax(scalarField(mag(change)));
     if (scheme_ == scheme::strong)
     {
-        acceleration_->relax(normalVelocity_, target);
         converged_ = residual_ < tolerance_;
         stop = converged_;
+        // The stabiliser's balance and the no-slip velocity are the
+        // acceleration's secondary data (interfaceAcceleration.H: IQN-ILS
+        // moves them with its columns, Aitken hands them the last solve's);
+        // on convergence they are the last solve's, so the balance cancels
+        // as before
+        vectorField balance(addedMass_->balanceAcceleration());
+        scalarField secondary(packVectors(balanceUsed, triangleVelocityUsed));
+        acceleration_->relax
+        (
+            normalVelocity_, target,
+            secondary, packVectors(balance, triangleVelocity_)
+        );
+        if (!stop)
+        {
+            unpackVectors(secondary, balance, triangleVelocity_);
+            addedMass_->setBalanceAcceleration(balance);
+        }
     }
     else
     {

@@ -149,10 +149,13 @@ Foam::interfaceQuasiNewton::interfaceQuasiNewton
     filter_(filter),
     V_(),
     W_(),
+    Ws_(),
     pastV_(),
     pastW_(),
+    pastWs_(),
     previousResidual_(),
     previousOutput_(),
+    previousSecondary_(),
     columnsUsed_(0),
     columnsDropped_(0)
 {}
@@ -179,6 +182,7 @@ void Foam::interfaceQuasiNewton::reset()
     {
         pastV_.append(List<scalarField>(V_));
         pastW_.append(List<scalarField>(W_));
+        pastWs_.append(List<scalarField>(Ws_));
     }
     while (pastV_.size() > reuse_)
     {
@@ -187,21 +191,22 @@ void Foam::interfaceQuasiNewton::reset()
         {
             pastV_[s - 1].transfer(pastV_[s]);
             pastW_[s - 1].transfer(pastW_[s]);
+            pastWs_[s - 1].transfer(pastWs_[s]);
         }
         pastV_.setSize(pastV_.size() - 1);
         pastW_.setSize(pastW_.size() - 1);
+        pastWs_.setSize(pastWs_.size() - 1);
     }
-    V_.clear();
-    W_.clear();
-    previousResidual_.clear();
-    previousOutput_.clear();
+    discardStep();
 }
 
 
 void Foam::interfaceQuasiNewton::relax
 (
     scalarField& x,
-    const scalarField& target
+    const scalarField& target,
+    scalarField& s,
+    const scalarField& sTarget
 )
 {
     const scalarField r(target - x);
@@ -210,32 +215,45 @@ void Foam::interfaceQuasiNewton::relax
     {
         V_.append(scalarField(r - previousResidual_));
         W_.append(scalarField(target - previousOutput_));
+        Ws_.append
+        (
+            previousSecondary_.size() == sTarget.size()
+          ? scalarField(sTarget - previousSecondary_)
+          : scalarField()
+        );
     }
     previousResidual_ = r;
     previousOutput_ = target;
+    previousSecondary_ = sTarget;
 
-    // Columns newest first: this step's, then the past steps'
-    UPtrList<const scalarField> V, W;
+    // Columns newest first: this step's, then the past steps'; a column
+    // is used only with secondary differences of the secondary data's size
+    UPtrList<const scalarField> V, W, Ws;
+    const auto add = [&](const scalarField& v, const scalarField& w, const scalarField& ws)
+    {
+        if (v.size() == r.size() && ws.size() == sTarget.size())
+        {
+            V.append(&v);
+            W.append(&w);
+            Ws.append(&ws);
+        }
+    };
     for (label j = V_.size() - 1; j >= 0; --j)
     {
-        V.append(&V_[j]);
-        W.append(&W_[j]);
+        add(V_[j], W_[j], Ws_[j]);
     }
-    for (label s = pastV_.size() - 1; s >= 0; --s)
+    for (label p = pastV_.size() - 1; p >= 0; --p)
     {
-        for (label j = pastV_[s].size() - 1; j >= 0; --j)
+        for (label j = pastV_[p].size() - 1; j >= 0; --j)
         {
-            if (pastV_[s][j].size() == r.size())
-            {
-                V.append(&pastV_[s][j]);
-                W.append(&pastW_[s][j]);
-            }
+            add(pastV_[p][j], pastW_[p][j], pastWs_[p][j]);
         }
     }
 
     if (V.empty())
     {
         x += omega0_*r;
+        s += omega0_*(sTarget - s);
         columnsUsed_ = 0;
         columnsDropped_ = 0;
         return;
@@ -244,11 +262,13 @@ void Foam::interfaceQuasiNewton::relax
     boolList keep;
     const scalarField c(leastSquares(V, r, keep));
     x = target;
+    s = sTarget;
     forAll(W, j)
     {
         if (keep[j])
         {
             x += c[j]*W[j];
+            s += c[j]*Ws[j];
         }
     }
 }
@@ -258,8 +278,10 @@ void Foam::interfaceQuasiNewton::discardStep()
 {
     V_.clear();
     W_.clear();
+    Ws_.clear();
     previousResidual_.clear();
     previousOutput_.clear();
+    previousSecondary_.clear();
 }
 
 
@@ -267,15 +289,17 @@ void Foam::interfaceQuasiNewton::writeState(dictionary& dict) const
 {
     // The past steps' columns as the next reset() leaves them: this step's
     // joined at the end, the oldest dropped beyond reuse_
-    List<List<scalarField>> pastV(pastV_), pastW(pastW_);
+    List<List<scalarField>> pastV(pastV_), pastW(pastW_), pastWs(pastWs_);
     if (reuse_ > 0 && V_.size())
     {
         pastV.append(List<scalarField>(V_));
         pastW.append(List<scalarField>(W_));
+        pastWs.append(List<scalarField>(Ws_));
     }
     const label drop = max(pastV.size() - reuse_, 0);
     dict.add("quasiNewtonV", SubList<List<scalarField>>(pastV, pastV.size() - drop, drop));
     dict.add("quasiNewtonW", SubList<List<scalarField>>(pastW, pastW.size() - drop, drop));
+    dict.add("quasiNewtonWs", SubList<List<scalarField>>(pastWs, pastWs.size() - drop, drop));
 }
 
 
@@ -295,25 +319,39 @@ void Foam::interfaceQuasiNewton::readState(const dictionary& dict)
     (
         dict.get<List<List<scalarField>>>("quasiNewtonW")
     );
-    bool fits = pastV.size() == pastW.size() && pastV.size() <= reuse_;
+    // Written before the secondary data: empty columns, which only an
+    // iteration without secondary data uses
+    List<List<scalarField>> pastWs(pastW.size());
+    forAll(pastWs, s)
+    {
+        pastWs[s].setSize(pastW[s].size());
+    }
+    if (dict.found("quasiNewtonWs"))
+    {
+        pastWs = dict.get<List<List<scalarField>>>("quasiNewtonWs");
+    }
+    bool fits =
+        pastV.size() == pastW.size() && pastV.size() == pastWs.size()
+     && pastV.size() <= reuse_;
     forAll(pastV, s)
     {
-        fits = fits && pastV[s].size() == pastW[s].size();
+        fits =
+            fits && pastV[s].size() == pastW[s].size()
+         && pastV[s].size() == pastWs[s].size();
     }
     if (!fits)
     {
         FatalIOErrorInFunction(dict)
-            << "Entries 'quasiNewtonV' and 'quasiNewtonW' hold "
-            << pastV.size() << " and " << pastW.size() << " time steps of"
+            << "Entries 'quasiNewtonV', 'quasiNewtonW' and 'quasiNewtonWs'"
+            << " hold " << pastV.size() << ", " << pastW.size() << " and "
+            << pastWs.size() << " time steps of"
             << " columns that do not pair up or exceed coupling.reuse = "
             << reuse_ << exit(FatalIOError);
     }
     pastV_ = pastV;
     pastW_ = pastW;
-    V_.clear();
-    W_.clear();
-    previousResidual_.clear();
-    previousOutput_.clear();
+    pastWs_ = pastWs;
+    discardStep();
 }
 
 
