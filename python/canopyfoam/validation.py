@@ -939,11 +939,31 @@ def report_json(case_dir):
     return os.path.join(case_dir, "postProcessing", "report", "report.json")
 
 
+def running_file(case_dir):
+    """Holds the process id of the canopy-validate that runs the case."""
+    return os.path.join(case_dir, "validation-running")
+
+
+def running_pid(case_dir):
+    """The id of the live canopy-validate process running the case, or
+    None (no file, or its process has gone: killed with its session)."""
+    try:
+        with open(running_file(case_dir)) as f:
+            pid = int(f.read().split()[0])
+        os.kill(pid, 0)
+    except (OSError, ValueError, IndexError):
+        return None
+    return pid
+
+
 def run_state(run):
-    """'complete', 'failed' (a solver log without End) or 'missing'."""
+    """'complete', 'running' (its canopy-validate process is alive),
+    'failed' (a solver log without End) or 'missing'."""
     log = solver_log(run.case_dir)
     if not os.path.exists(log):
         return "missing"
+    if running_pid(run.case_dir) is not None:
+        return "running"
     with open(log, errors="replace") as f:
         ended = any(line.startswith("End") for line in f)
     if ended and os.path.exists(report_json(run.case_dir)):
@@ -1014,17 +1034,23 @@ def execute(run, ranks, resume=False):
                   "w") as f:
             f.write("%.1f %d\n" % (earlier + time.time() - start, ranks))
 
-    with open(log, "a" if resume else "w") as out:
-        proc = subprocess.Popen(cmd, stdout=out, stderr=subprocess.STDOUT,
-                                cwd=run.case_dir)
-        while True:
-            record_wall()
-            try:
-                status = proc.wait(timeout=30)
-                break
-            except subprocess.TimeoutExpired:
-                pass
-    record_wall()
+    with open(running_file(run.case_dir), "w") as f:
+        f.write("%d\n" % os.getpid())
+    try:
+        with open(log, "a" if resume else "w") as out:
+            proc = subprocess.Popen(cmd, stdout=out,
+                                    stderr=subprocess.STDOUT,
+                                    cwd=run.case_dir)
+            while True:
+                record_wall()
+                try:
+                    status = proc.wait(timeout=30)
+                    break
+                except subprocess.TimeoutExpired:
+                    pass
+        record_wall()
+    finally:
+        os.remove(running_file(run.case_dir))
     wall = earlier + time.time() - start
     print("canopy-validate: %s %s after %.0f s" % (
         run.ident, "done" if status == 0 else "FAILED (status %d)" % status,
@@ -1136,6 +1162,11 @@ def record(run):
     record written to the archive (docs/validation/runs); a run without
     one is read from the archive."""
     state = run_state(run)
+    if state == "running":
+        # its record is written when it ends; the archive's, if any, is
+        # of an earlier run of the same definition
+        return None, "running (`bin/canopy-progress %s %d`)" % (
+            run.case_dir, running_pid(run.case_dir))
     if state == "missing":
         rec, why = archive.load(ARCHIVE_DIR, run)
         if rec is not None:
@@ -2086,6 +2117,12 @@ def main(argv=None):
         if run_state(run) == "complete" and not args.force:
             print("canopy-validate: %s is complete (--force re-runs it)"
                   % ident)
+            continue
+        if run_state(run) == "running":
+            print("canopy-validate: %s is running (process %d); not "
+                  "started again" % (ident, running_pid(run.case_dir)),
+                  file=sys.stderr)
+            ok = False
             continue
         resume = args.resume and run_state(run) == "failed"
         try:
