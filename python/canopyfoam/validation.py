@@ -713,6 +713,18 @@ RUNS += [
           edits=[(MESH_DICT, "edgeLengthPerCell", "%g" % e)])
     for e in (0.83, 1.88)
 ]
+# The same at 18 cells across D0, the finest level at which a run to 8 s
+# takes a quarter of an hour on 2 cores: the Courant number halved, the
+# fabric's edge 1.5 times finer than the default 1.25 finest cells
+RUNS += [
+    seven("7ft-cpd18-co0.25", "box 8 D0 wide, 18 cells across D0, maxCo "
+          "0.25 (maxDeltaT 0.005), to 8 s", ["-cellsPerDiameter", "18"],
+          edits=[("system/controlDict", "maxCo", "0.25"),
+                 ("system/controlDict", "maxDeltaT", "0.005")]),
+    seven("7ft-cpd18-edge0.83", "box 8 D0 wide, 18 cells across D0, fabric "
+          "edge 0.83 cells, to 8 s", ["-cellsPerDiameter", "18"],
+          edits=[(MESH_DICT, "edgeLengthPerCell", "0.83")]),
+]
 # The pressure solver: the coupling ends the outer loop after the fluid
 # has been solved, so no outer iteration is known to be the last in time
 # for pFinal; this run solves p to relTol 0 (pFinal's setting) on every
@@ -845,6 +857,11 @@ STUDIES = [
     ("edgeLength7ft", "7 ft canopy: the structure's resolution (12 cells "
      "across D0; fabric edge in finest cells)",
      ["7ft-edge0.83", "7ft-default", "7ft-edge1.88"]),
+    ("timeStep7ftCpd18", "7 ft canopy: the time step (18 cells across D0)",
+     ["7ft-cpd18", "7ft-cpd18-co0.25"]),
+    ("edgeLength7ftCpd18", "7 ft canopy: the structure's resolution (18 "
+     "cells across D0; fabric edge in finest cells)",
+     ["7ft-cpd18", "7ft-cpd18-edge0.83"]),
     ("freeT10", "T-10 at 163 kg in free flight to 50 s (11 cells across "
      "D0)", ["T10-m163-default", "T10-m163-free50"]),
     ("domainT10", "T-10 at 163 kg on a guide wire: the box's width (11 "
@@ -939,11 +956,31 @@ def report_json(case_dir):
     return os.path.join(case_dir, "postProcessing", "report", "report.json")
 
 
+def running_file(case_dir):
+    """Holds the process id of the canopy-validate that runs the case."""
+    return os.path.join(case_dir, "validation-running")
+
+
+def running_pid(case_dir):
+    """The id of the live canopy-validate process running the case, or
+    None (no file, or its process has gone: killed with its session)."""
+    try:
+        with open(running_file(case_dir)) as f:
+            pid = int(f.read().split()[0])
+        os.kill(pid, 0)
+    except (OSError, ValueError, IndexError):
+        return None
+    return pid
+
+
 def run_state(run):
-    """'complete', 'failed' (a solver log without End) or 'missing'."""
+    """'complete', 'running' (its canopy-validate process is alive),
+    'failed' (a solver log without End) or 'missing'."""
     log = solver_log(run.case_dir)
     if not os.path.exists(log):
         return "missing"
+    if running_pid(run.case_dir) is not None:
+        return "running"
     with open(log, errors="replace") as f:
         ended = any(line.startswith("End") for line in f)
     if ended and os.path.exists(report_json(run.case_dir)):
@@ -1014,17 +1051,23 @@ def execute(run, ranks, resume=False):
                   "w") as f:
             f.write("%.1f %d\n" % (earlier + time.time() - start, ranks))
 
-    with open(log, "a" if resume else "w") as out:
-        proc = subprocess.Popen(cmd, stdout=out, stderr=subprocess.STDOUT,
-                                cwd=run.case_dir)
-        while True:
-            record_wall()
-            try:
-                status = proc.wait(timeout=30)
-                break
-            except subprocess.TimeoutExpired:
-                pass
-    record_wall()
+    with open(running_file(run.case_dir), "w") as f:
+        f.write("%d\n" % os.getpid())
+    try:
+        with open(log, "a" if resume else "w") as out:
+            proc = subprocess.Popen(cmd, stdout=out,
+                                    stderr=subprocess.STDOUT,
+                                    cwd=run.case_dir)
+            while True:
+                record_wall()
+                try:
+                    status = proc.wait(timeout=30)
+                    break
+                except subprocess.TimeoutExpired:
+                    pass
+        record_wall()
+    finally:
+        os.remove(running_file(run.case_dir))
     wall = earlier + time.time() - start
     print("canopy-validate: %s %s after %.0f s" % (
         run.ident, "done" if status == 0 else "FAILED (status %d)" % status,
@@ -1136,6 +1179,11 @@ def record(run):
     record written to the archive (docs/validation/runs); a run without
     one is read from the archive."""
     state = run_state(run)
+    if state == "running":
+        # its record is written when it ends; the archive's, if any, is
+        # of an earlier run of the same definition
+        return None, "running (`bin/canopy-progress %s %d`)" % (
+            run.case_dir, running_pid(run.case_dir))
     if state == "missing":
         rec, why = archive.load(ARCHIVE_DIR, run)
         if rec is not None:
@@ -1376,10 +1424,10 @@ def gci_lines(results, fineness=None, unit="cells across D0"):
     return lines + [""]
 
 
-def two_level_lines(results, what):
-    """Roache's two-level estimate of a refinement by 2 with formal order
-    1: the finer run's uncertainty Fs |f1 - f2| / (2^1 - 1) with Fs = 3
-    (Roache 1998, for two levels), as markdown."""
+def two_level_lines(results, what, ratio=2.0):
+    """Roache's two-level estimate of a refinement by ratio r with formal
+    order 1: the finer run's uncertainty Fs |f1 - f2| / (r - 1) with Fs =
+    3 (Roache 1998, for two levels), as markdown; results coarse first."""
     done = [(run, rec["analysis"]) for run, rec in results
             if rec is not None and rec["complete"]
             and rec["analysis"] is not None]
@@ -1388,8 +1436,8 @@ def two_level_lines(results, what):
                 % len(done), ""]
     (run2, a2), (run1, a1) = done      # coarse first, as the study lists
     lines = ["Two-level estimate of %s (Roache: GCI = 3 |f1 - f2| / |f1| "
-             "for a ratio 2 and order 1), %s against %s:" % (
-                 what, run1.ident, run2.ident), "",
+             "/ (r - 1) for a ratio r = %g and order 1), %s against %s:" % (
+                 what, ratio, run1.ident, run2.ident), "",
              "| quantity | %s | %s | GCI of %s |" % (run1.ident, run2.ident,
                                                       run1.ident),
              "|---|---|---|---|"]
@@ -1401,7 +1449,7 @@ def two_level_lines(results, what):
             ("Dp/D0", lambda a: a["projectedDiameter"]["mean"] / d0)):
         f1, f2 = get(a1), get(a2)
         lines.append("| %s | %.4g | %.4g | %.1f %% |" % (
-            key, f1, f2, 100 * 3 * abs(f1 - f2) / abs(f1)))
+            key, f1, f2, 100 * 3 * abs(f1 - f2) / abs(f1) / (ratio - 1)))
     return lines + [""]
 
 
@@ -1741,6 +1789,20 @@ def write_report():
                    "7ft-co0.25 the canopy closes from 6.5 s (projected "
                    "diameter 1.95 to 1.69 m by 8 s, the descent rising to "
                    "6.1 m/s), which 7ft-default does not.", ""]
+        if name == "timeStep7ftCpd18":
+            md += two_level_lines(results, "the time step at 18 cells "
+                                  "across D0 (maxCo 0.5 and 0.25)")
+            md += ["7ft-cpd18 ran with Aitken's factor from 0.3, "
+                   "7ft-cpd18-co0.25 from 1 (the tutorial's setting since "
+                   "then): on 18 cells that moved the descent by 0.016 m/s "
+                   "(tutorials/parachutes/flatCircular7ft/README.md), a "
+                   "third of the runs' 95 % intervals.", ""]
+        if name == "edgeLength7ftCpd18":
+            md += two_level_lines(results, "the structure's resolution at "
+                                  "18 cells across D0 (fabric edge 1.25 "
+                                  "and 0.83 finest cells)", ratio=1.25 / 0.83)
+            md += ["7ft-cpd18 ran with Aitken's factor from 0.3, "
+                   "7ft-cpd18-edge0.83 from 1 (as 7ft-cpd18-co0.25).", ""]
         if name == "pressureSolver7ft":
             md += ["canopyPimpleFoam learns that an outer iteration was "
                    "the last of its time step only after solving it (the "
@@ -2116,6 +2178,12 @@ def main(argv=None):
         if run_state(run) == "complete" and not args.force:
             print("canopy-validate: %s is complete (--force re-runs it)"
                   % ident)
+            continue
+        if run_state(run) == "running":
+            print("canopy-validate: %s is running (process %d); not "
+                  "started again" % (ident, running_pid(run.case_dir)),
+                  file=sys.stderr)
+            ok = False
             continue
         resume = args.resume and run_state(run) == "failed"
         try:

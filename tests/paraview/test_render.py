@@ -451,7 +451,9 @@ def main():
         traceback.print_exc()
         failures.append("exception: %s" % e)
     elapsed = time.time() - start
-    check("finished within 60 s", elapsed < 60, "%.1f s" % elapsed)
+    # the time is a figure for the log, not a check: speed belongs to the
+    # benchmarks, and Alltest's time limit catches a hang
+    print("  render checks took %.1f s" % elapsed)
     if failures:
         print("FAIL: %d check(s) failed: %s; files kept in %s"
               % (len(failures), ", ".join(failures), tmp))

@@ -13,6 +13,8 @@ Oscillatory and divergent triples fall back to Fs = 3 with the formal
 order; equal cell sizes are refused. validation.resolution_estimates
 gives the breathing frequency a GCI only when the three levels' peaks
 are one mode (within validation.BREATHING_SAME_MODE of each other).
+validation.two_level_lines gives two runs Roache's Fs = 3 estimate for
+any refinement ratio.
 """
 
 import math
@@ -108,10 +110,31 @@ def test_breathing_modes():
                  key not in table, sorted(table))
 
 
+def test_two_levels():
+    """Two runs, coarse first: the finer's GCI is 3 |f1 - f2| / |f1| /
+    (r - 1) (Roache's Fs = 3, order 1)."""
+    coarse = validation.Run("coarse", "parachutes/flatCircular7ft", "c")
+    fine = validation.Run("fine", "parachutes/flatCircular7ft", "f")
+    lines = validation.two_level_lines(
+        [(coarse, fake_record(None, descent=5.0)),
+         (fine, fake_record(None, descent=5.5))], "a test", ratio=1.5)
+    row = [line for line in lines if line.startswith("| descent")]
+    want = 100 * 3 * 0.5 / 5.5 / 0.5
+    shared.check("two levels at ratio 1.5: descent GCI %.1f %%" % want,
+                 row == ["| descent speed [m/s] | 5.5 | 5 | %.1f %% |"
+                         % want], row)
+    lines = validation.two_level_lines(
+        [(coarse, fake_record(None)), (fine, None)], "a test")
+    shared.check("two levels with one run missing: no estimate",
+                 lines[0].startswith("Two-level estimate: needs both"),
+                 lines[:1])
+
+
 def main():
     test_orders()
     test_fallbacks()
     test_breathing_modes()
+    test_two_levels()
     if shared.failures:
         print("FAIL: %d check(s) failed: %s" % (len(shared.failures),
                                                ", ".join(shared.failures)))

@@ -10,6 +10,7 @@ the report's folders.
 
 import os
 import shutil
+import subprocess
 import sys
 import tempfile
 
@@ -127,12 +128,39 @@ def test_report_keeps_and_rewrites(run):
           "docs/validation/fromRecord.png")
 
 
+def test_running_run(tmp):
+    """A run whose canopy-validate is alive is 'running' and gets no record
+    yet; once its process has gone (killed with its session) it is a
+    stopped run, 'failed', that --continue picks up."""
+    run = val.Run("synthetic-running", "parachutes/flatCircular7ft",
+                  "synthetic run still going")
+    make_case(run.case_dir)
+    with open(val.solver_log(run.case_dir), "w") as f:
+        f.write("Time = 6\n")
+    with open(val.running_file(run.case_dir), "w") as f:
+        f.write("%d\n" % os.getpid())
+    rec, why = val.record(run)
+    path = archive.record_path(val.ARCHIVE_DIR, run.ident)
+    check("a run whose process is alive is running, without a record",
+          val.run_state(run) == "running" and rec is None
+          and why.startswith("running") and not os.path.exists(path),
+          "state %s, record %s, why %s" % (val.run_state(run), rec, why))
+    gone = subprocess.Popen(["true"])
+    gone.wait()
+    with open(val.running_file(run.case_dir), "w") as f:
+        f.write("%d\n" % gone.pid)
+    check("a run whose process has gone is a stopped run",
+          val.run_state(run) == "failed", "state %s" % val.run_state(run))
+    shutil.rmtree(run.case_dir)
+
+
 def main():
     tmp = tempfile.mkdtemp(prefix="canopy-validation-archive-")
 
     def body():
         use_tmp(tmp)
         run = test_record_round_trip(tmp)
+        test_running_run(tmp)
         test_report_keeps_and_rewrites(run)
     return synthetic.run_checks(tmp, body, "validation archive")
 
