@@ -20,13 +20,11 @@ Description
 
 #include "canopyStructure.H"
 #include "OStringStream.H"
-#include "switchToken.H"
-#include "FlatOutput.H"
+#include "scopedEntryReader.H"
 
 #include "canopy.h"
 
 #include <cmath>
-#include <cstdlib>
 #include <map>
 #include <utility>
 #include <vector>
@@ -37,340 +35,6 @@ namespace
 {
 
 using namespace Foam;
-
-// Function name shown in the dictionary errors and warnings
-const char* const whereName = "Foam::canopyStructure::build";
-
-
-// A number as OpenFOAM writes it (2.134, not 2.134000)
-std::string toStr(const scalar x)
-{
-    OStringStream os;
-    os << x;
-    return os.str();
-}
-
-
-// Reads the entries of one (sub-)dictionary with type and range checks.
-// Errors are FatalIOError on that dictionary and name the entry by its
-// scoped name ("payload.mass").
-class entryReader
-{
-    const dictionary& dict_;
-    const std::string scope_;
-
-    static std::string describe(const token& tok)
-    {
-        OStringStream os;
-        os << tok.info();
-        return os.str();
-    }
-
-    const entry* find(const word& key) const
-    {
-        return dict_.findEntry(key, keyType::LITERAL);
-    }
-
-    // The entry's stream; fails if it is missing or a sub-dictionary
-    ITstream& stream(const word& key, const std::string& expected) const
-    {
-        const entry* e = find(key);
-        if (!e)
-        {
-            fail(key, "is missing (required: " + expected + ")");
-        }
-        if (e->isDict())
-        {
-            fail(key, "must be a value (" + expected + "), not a sub-dictionary");
-        }
-        return e->stream();
-    }
-
-    // The single token of a one-token entry
-    const token& single(const word& key, const std::string& expected) const
-    {
-        ITstream& is = stream(key, expected);
-        if (is.size() != 1)
-        {
-            fail
-            (
-                key,
-                "must be a single value (" + expected + "), found "
-              + std::to_string(is.size()) + " tokens: " + is.toString()
-            );
-        }
-        return is[0];
-    }
-
-
-public:
-
-    entryReader(const dictionary& dict, const std::string& scope)
-    :
-        dict_(dict),
-        scope_(scope)
-    {}
-
-    const dictionary& dict() const
-    {
-        return dict_;
-    }
-
-    //- Scoped name of an entry: "payload.mass"
-    std::string name(const word& key) const
-    {
-        return scope_.empty() ? std::string(key) : scope_ + '.' + key;
-    }
-
-    bool found(const word& key) const
-    {
-        return find(key) != nullptr;
-    }
-
-    //- FatalIOError "Entry '<scope.key>' <what>"
-    [[noreturn]] void fail(const word& key, const std::string& what) const
-    {
-        FatalIOErrorIn(whereName, dict_)
-            << "Entry '" << name(key).c_str() << "' " << what.c_str() << nl
-            << exit(FatalIOError);
-        std::abort();   // not reached: FatalIOError exits or throws
-    }
-
-    //- A number (finite)
-    scalar getScalar(const word& key, const std::string& what) const
-    {
-        const token& tok = single(key, what);
-        if (!tok.isNumber())
-        {
-            fail
-            (
-                key,
-                "must be a number (" + what + "), found " + describe(tok)
-            );
-        }
-        const scalar x = tok.number();
-        if (!std::isfinite(x))
-        {
-            fail(key, "= " + toStr(x) + " must be finite");
-        }
-        return x;
-    }
-
-    //- A number > 0
-    scalar positive(const word& key, const std::string& what) const
-    {
-        const scalar x = getScalar(key, what);
-        if (!(x > 0))
-        {
-            fail(key, "= " + toStr(x) + " must be > 0 (" + what + ")");
-        }
-        return x;
-    }
-
-    scalar positive
-    (
-        const word& key,
-        const std::string& what,
-        const scalar deflt
-    ) const
-    {
-        return found(key) ? positive(key, what) : deflt;
-    }
-
-    //- A number >= 0
-    scalar nonNegative(const word& key, const std::string& what) const
-    {
-        const scalar x = getScalar(key, what);
-        if (x < 0)
-        {
-            fail(key, "= " + toStr(x) + " must be >= 0 (" + what + ")");
-        }
-        return x;
-    }
-
-    scalar nonNegative
-    (
-        const word& key,
-        const std::string& what,
-        const scalar deflt
-    ) const
-    {
-        return found(key) ? nonNegative(key, what) : deflt;
-    }
-
-    //- A number in [lo, hi]
-    scalar inRange
-    (
-        const word& key,
-        const std::string& what,
-        const scalar lo,
-        const scalar hi,
-        const scalar deflt
-    ) const
-    {
-        if (!found(key))
-        {
-            return deflt;
-        }
-        const scalar x = getScalar(key, what);
-        if (x < lo || x > hi)
-        {
-            fail
-            (
-                key,
-                "= " + toStr(x) + " must be in [" + toStr(lo) + ", " + toStr(hi)
-              + "] (" + what + ")"
-            );
-        }
-        return x;
-    }
-
-    //- An integer
-    label getLabel(const word& key, const std::string& what) const
-    {
-        const token& tok = single(key, what);
-        if (!tok.isLabel())
-        {
-            fail
-            (
-                key,
-                "must be an integer (" + what + "), found " + describe(tok)
-            );
-        }
-        return tok.labelToken();
-    }
-
-    //- A switch: true/false, on/off, yes/no, ...
-    bool getBool(const word& key, const bool deflt) const
-    {
-        if (!found(key))
-        {
-            return deflt;
-        }
-        const token& tok = single(key, "true or false");
-        bool value = deflt;
-        if (readSwitchToken(tok, value))
-        {
-            return value;
-        }
-        fail
-        (
-            key,
-            "must be a switch (true/false, on/off, yes/no), found "
-          + describe(tok)
-        );
-    }
-
-    //- A vector (x y z), finite
-    vector getVector(const word& key, const vector& deflt) const
-    {
-        if (!found(key))
-        {
-            return deflt;
-        }
-        ITstream& is = stream(key, "a vector (x y z)");
-        const bool ok =
-            is.size() == 5
-         && is[0].isPunctuation() && is[0].pToken() == token::BEGIN_LIST
-         && is[1].isNumber() && is[2].isNumber() && is[3].isNumber()
-         && is[4].isPunctuation() && is[4].pToken() == token::END_LIST;
-        if (!ok)
-        {
-            fail(key, "must be a vector (x y z), found " + is.toString());
-        }
-        const vector v(is[1].number(), is[2].number(), is[3].number());
-        if (!std::isfinite(v.x()) || !std::isfinite(v.y()) || !std::isfinite(v.z()))
-        {
-            fail(key, "must be finite");
-        }
-        return v;
-    }
-
-    //- One of the given names; a missing entry gives deflt if that is not
-    //- empty, else is an error
-    word select
-    (
-        const word& key,
-        const wordList& valid,
-        const std::string& what,
-        const word& deflt = word::null
-    ) const
-    {
-        if (!found(key) && !deflt.empty())
-        {
-            return deflt;
-        }
-        std::string list;
-        for (const word& w : valid)
-        {
-            list += (list.empty() ? "" : " ") + w;
-        }
-        const token& tok = single(key, "the " + what + ", one of: " + list);
-        if (!tok.isWord())
-        {
-            fail
-            (
-                key,
-                "must be a " + what + " name, found " + describe(tok)
-              + ". Valid " + what + "s: " + list
-            );
-        }
-        const word& w = tok.wordToken();
-        if (!valid.found(w))
-        {
-            fail
-            (
-                key,
-                "= " + w + " is not a known " + what + ". Valid " + what
-              + "s: " + list
-            );
-        }
-        return w;
-    }
-
-    //- A sub-dictionary, or nullptr when absent (an entry that is not a
-    //- dictionary is an error)
-    const dictionary* optionalDict(const word& key) const
-    {
-        const entry* e = find(key);
-        if (!e)
-        {
-            return nullptr;
-        }
-        if (!e->isDict())
-        {
-            fail(key, "must be a sub-dictionary { ... }");
-        }
-        return &e->dict();
-    }
-
-    const dictionary& requiredDict(const word& key, const std::string& what)
-        const
-    {
-        const dictionary* d = optionalDict(key);
-        if (!d)
-        {
-            fail(key, "is missing: a sub-dictionary " + what + " is required");
-        }
-        return *d;
-    }
-
-    //- Warn about the entries not in 'used'
-    void warnUnused(const wordList& used, const std::string& context) const
-    {
-        for (const word& key : dict_.toc())
-        {
-            if (!used.found(key))
-            {
-                IOWarningIn(whereName, dict_)
-                    << "Entry '" << name(key).c_str() << "' is not used"
-                    << context.c_str() << " and is ignored. Valid entries here: "
-                    << flatOutput(used) << endl;
-            }
-        }
-    }
-};
-
 
 // Spring laws by dictionary name
 const wordList lawNames{"modelII", "modelI", "tensionOnly"};
@@ -419,7 +83,7 @@ const materialKeys lineKeys
 // Read a material over the given defaults
 void readMaterial
 (
-    const entryReader& r,
+    const scopedEntryReader& r,
     const materialKeys& keys,
     canopy_material& mat
 )
@@ -451,37 +115,83 @@ void readMaterial
     );
     mat.law = lawFromName
     (
-        r.select("law", lawNames, "spring law", lawName(mat.law))
+        r.choice("law", lawNames, "spring law", lawName(mat.law))
     );
 }
 
-} // End anonymous namespace
 
-
-// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
-
-void Foam::canopyStructure::build(const vector& defaultGravity)
+// Everything canopyProperties says, read and checked: libcanopy's build
+// specifications complete, and the settings applied to the model after
+struct structureSpec
 {
-    const entryReader top(dict_, "");
-
-    // ---- canopy ------------------------------------------------------------
-
-    const entryReader cr(top.requiredDict("canopy", "canopy { type ...; }"), "canopy");
-
-    const wordList types{"flatCircular", "parabolic", "cross", "rectangle"};
-    const word type = cr.select("type", types, "canopy type");
-    const bool circular = (type == "flatCircular" || type == "parabolic");
-
+    // canopy
+    word type;
+    bool circular = false;
     canopy_circular_spec circ = canopy_circular_spec_default();
     canopy_cross_spec cross = canopy_cross_spec_default();
     canopy_rectangle_spec rect = canopy_rectangle_spec_default();
+    scalar edge = 0;
+    vector centre = Zero;
+    label nAttach = 0;
 
-    const scalar edge = cr.positive("edgeLength", "target triangle edge length [m]");
-    const vector centre = cr.getVector("centre", Zero);
+    // fabric
+    canopy_material fabric = canopy_material_fabric_default();
+    scalar alpha = 0;
+    scalar beta = 0;
+    scalar bendingDamping = 0;
+    word bendingDampingScheme = "explicit";
+    word bendingDampingFilter = "none";
+    scalar compressionRatio = 1;
 
-    wordList canopyUsed{"type", "edgeLength", "centre"};
-    if (circular)
+    // radial tapes
+    bool tapes = false;
+
+    // lines and payload
+    const dictionary* linesDict = nullptr;
+    label nLines = 0;
+    canopy_lines_spec lines = canopy_lines_spec_default();
+    bool payloadFixed = false;
+
+    // guide wire
+    bool guidePayload = false;
+    bool guideApex = false;
+    vector guideDirection = Zero;
+
+    // model
+    vector g = Zero;
+    vector initialVelocity = Zero;
+    word integratorName = "rk4";
+    scalar maxOmegaDt = 0.1;
+    scalar hhtAlpha = -0.1;
+    scalar newtonTol = 1e-10;
+    label newtonIter = 25;
+    scalar speedLimit = 1e4;
+    bool fixSkirt = false;
+    bool fixAll = false;
+};
+
+
+// The entries a material reads (radial tapes, lines)
+const wordList lineMaterialEntries
+{
+    "linearDensity", "stiffness", "EA", "damping", "law"
+};
+
+
+// canopy: type, size and shape; returns the entries read
+wordList readCanopyShape(const scopedEntryReader& cr, structureSpec& s)
+{
+    const wordList types{"flatCircular", "parabolic", "cross", "rectangle"};
+    s.type = cr.choice("type", types, "canopy type");
+    s.circular = (s.type == "flatCircular" || s.type == "parabolic");
+
+    s.edge = cr.positive("edgeLength", "target triangle edge length [m]");
+    s.centre = cr.vectorValue("centre", "canopy centre [m]", Zero);
+
+    wordList used{"type", "edgeLength", "centre"};
+    if (s.circular)
     {
+        canopy_circular_spec& circ = s.circ;
         circ.diameter = cr.positive("diameter", "skirt diameter [m]");
         circ.vent_diameter = cr.nonNegative("ventDiameter", "vent diameter [m]", 0);
         if (!(circ.vent_diameter < circ.diameter))
@@ -489,16 +199,15 @@ void Foam::canopyStructure::build(const vector& defaultGravity)
             cr.fail
             (
                 "ventDiameter",
-                "= " + toStr(circ.vent_diameter)
+                "= " + scopedEntryReader::format(circ.vent_diameter)
               + " must be smaller than " + cr.name("diameter") + " = "
-              + toStr(circ.diameter)
+              + scopedEntryReader::format(circ.diameter)
             );
         }
-        canopyUsed.append(wordList{"diameter", "ventDiameter"});
-        if (type == "parabolic")
+        used.append(wordList{"diameter", "ventDiameter", "height"});
+        if (s.type == "parabolic")
         {
             circ.height = cr.positive("height", "apex height above the skirt [m]");
-            canopyUsed.append("height");
         }
         else
         {
@@ -509,357 +218,428 @@ void Foam::canopyStructure::build(const vector& defaultGravity)
                 cr.fail
                 (
                     "height",
-                    "= " + toStr(circ.height) + ", but a flatCircular canopy "
-                    "is flat (use canopy type parabolic for a height)"
+                    "= " + scopedEntryReader::format(circ.height)
+                  + ", but a flatCircular canopy is flat (use canopy type"
+                    " parabolic for a height)"
                 );
             }
-            canopyUsed.append("height");
         }
     }
-    else if (type == "cross")
+    else if (s.type == "cross")
     {
-        cross.span = cr.positive("span", "tip-to-tip arm length [m]");
-        cross.arm_width = cr.positive("armWidth", "arm width [m]");
-        if (!(cross.arm_width < cross.span))
+        s.cross.span = cr.positive("span", "tip-to-tip arm length [m]");
+        s.cross.arm_width = cr.positive("armWidth", "arm width [m]");
+        if (!(s.cross.arm_width < s.cross.span))
         {
             cr.fail
             (
                 "armWidth",
-                "= " + toStr(cross.arm_width) + " must be smaller than "
-              + cr.name("span") + " = " + toStr(cross.span)
+                "= " + scopedEntryReader::format(s.cross.arm_width)
+              + " must be smaller than " + cr.name("span") + " = "
+              + scopedEntryReader::format(s.cross.span)
             );
         }
-        canopyUsed.append(wordList{"span", "armWidth"});
+        used.append(wordList{"span", "armWidth"});
     }
     else
     {
-        rect.width = cr.positive("width", "extent along x [m]");
-        rect.length = cr.positive("length", "extent along y [m]");
-        canopyUsed.append(wordList{"width", "length"});
+        s.rect.width = cr.positive("width", "extent along x [m]");
+        s.rect.length = cr.positive("length", "extent along y [m]");
+        used.append(wordList{"width", "length"});
     }
+    return used;
+}
 
-    // ---- lines (read first: nAttachments defaults to lines.number) --------
 
-    const dictionary* linesDict = top.optionalDict("lines");
-    const entryReader lr(linesDict ? *linesDict : dictionary::null, "lines");
-    label nLines = 0;
-    if (linesDict)
+// lines.number (read before the attachments: nAttachments defaults to it)
+void readLineCount(const scopedEntryReader& top, structureSpec& s)
+{
+    s.linesDict = top.optionalDict("lines");
+    if (!s.linesDict)
     {
-        nLines = lr.getLabel("number", "the number of suspension lines");
-        if (nLines < 0 || (nLines > 0 && nLines < 3))
+        return;
+    }
+    const scopedEntryReader lr(*s.linesDict, "lines");
+    s.nLines = lr.integer("number", "the number of suspension lines");
+    if (s.nLines < 0 || (s.nLines > 0 && s.nLines < 3))
+    {
+        lr.fail
+        (
+            "number",
+            "= " + std::to_string(s.nLines) + " must be 0 (no lines) or >= 3"
+        );
+    }
+}
+
+
+// canopy.nAttachments, checked against the canopy type and lines.number;
+// then the canopy's unused entries (used: those read so far)
+void readAttachments
+(
+    const scopedEntryReader& cr,
+    structureSpec& s,
+    wordList used
+)
+{
+    const scopedEntryReader lr
+    (
+        s.linesDict ? *s.linesDict : dictionary::null, "lines"
+    );
+    if (s.type == "rectangle")
+    {
+        if (s.nLines > 0)
         {
             lr.fail
             (
                 "number",
-                "= " + std::to_string(nLines) + " must be 0 (no lines) or >= 3"
-            );
-        }
-    }
-
-    // ---- attachments ---------------------------------------------------------
-
-    label nAttach = 0;
-    if (type == "rectangle")
-    {
-        if (nLines > 0)
-        {
-            lr.fail
-            (
-                "number",
-                "= " + std::to_string(nLines) + ": a rectangle canopy has no "
-                "attachment points for lines; use lines { number 0; } or "
+                "= " + std::to_string(s.nLines) + ": a rectangle canopy has "
+                "no attachment points for lines; use lines { number 0; } or "
                 "remove lines"
             );
         }
+        cr.warnUnused(used, " by canopy type " + s.type);
+        return;
+    }
+    used.append("nAttachments");
+
+    // The entry that sets the attachment count, for the messages
+    const scopedEntryReader* src = &cr;
+    word srcKey = "nAttachments";
+    std::string note;
+    if (cr.found("nAttachments"))
+    {
+        s.nAttach = cr.integer("nAttachments", "the number of attachment points");
+    }
+    else if (s.nLines > 0)
+    {
+        s.nAttach = s.nLines;
+        src = &lr;
+        srcKey = "number";
+        note = " (canopy.nAttachments defaults to lines.number)";
     }
     else
     {
-        canopyUsed.append("nAttachments");
-
-        // The entry that sets the attachment count, for the messages
-        const entryReader* src = &cr;
-        word srcKey = "nAttachments";
-        std::string note;
-        if (cr.found("nAttachments"))
-        {
-            nAttach = cr.getLabel("nAttachments", "the number of attachment points");
-        }
-        else if (nLines > 0)
-        {
-            nAttach = nLines;
-            src = &lr;
-            srcKey = "number";
-            note = " (canopy.nAttachments defaults to lines.number)";
-        }
-        else
-        {
-            nAttach = circular ? circ.n_attachments : cross.n_attachments;
-        }
-
-        if (circular && nAttach < 3)
-        {
-            src->fail
-            (
-                srcKey,
-                "= " + std::to_string(nAttach) + " must be >= 3" + note
-            );
-        }
-        if (type == "cross" && (nAttach < 4 || nAttach % 4 != 0))
-        {
-            src->fail
-            (
-                srcKey,
-                "= " + std::to_string(nAttach) + " must be a positive "
-                "multiple of 4 for a cross canopy (the attachment points are "
-                "spread evenly over the four arm tips)" + note
-            );
-        }
-        if (nLines > 0 && nAttach != nLines)
-        {
-            cr.fail
-            (
-                "nAttachments",
-                "= " + std::to_string(nAttach) + " must equal "
-              + lr.name("number") + " = " + std::to_string(nLines)
-              + " (one line per attachment point)"
-            );
-        }
+        s.nAttach = s.circular ? s.circ.n_attachments : s.cross.n_attachments;
     }
-    cr.warnUnused(canopyUsed, " by canopy type " + type);
 
-    // ---- fabric --------------------------------------------------------------
-
-    canopy_material fabric = canopy_material_fabric_default();
-    scalar alpha = 0;
-    scalar beta = 0;
-    scalar bendingDamping = 0;
-    word bendingDampingScheme("explicit");
-    word bendingDampingFilter("none");
-    scalar compressionRatio = 1;
-    if (const dictionary* d = top.optionalDict("fabric"))
+    if (s.circular && s.nAttach < 3)
     {
-        const entryReader fr(*d, "fabric");
-        readMaterial(fr, sheetKeys, fabric);
-        bendingDamping = fr.nonNegative
+        src->fail
         (
-            "bendingDamping", "decay rate of each hinge's bending [1/s]", 0
+            srcKey,
+            "= " + std::to_string(s.nAttach) + " must be >= 3" + note
         );
-        bendingDampingScheme = fr.select
+    }
+    if (s.type == "cross" && (s.nAttach < 4 || s.nAttach % 4 != 0))
+    {
+        src->fail
         (
-            "bendingDampingScheme", wordList{"explicit", "implicit"},
-            "hinge dashpot scheme", bendingDampingScheme
+            srcKey,
+            "= " + std::to_string(s.nAttach) + " must be a positive "
+            "multiple of 4 for a cross canopy (the attachment points are "
+            "spread evenly over the four arm tips)" + note
         );
-        bendingDampingFilter = fr.select
+    }
+    if (s.nLines > 0 && s.nAttach != s.nLines)
+    {
+        cr.fail
         (
-            "bendingDampingFilter", wordList{"none", "highPass"},
-            "hinge dashpot filter", bendingDampingFilter
+            "nAttachments",
+            "= " + std::to_string(s.nAttach) + " must equal "
+          + lr.name("number") + " = " + std::to_string(s.nLines)
+          + " (one line per attachment point)"
         );
-        if
+    }
+    cr.warnUnused(used, " by canopy type " + s.type);
+}
+
+
+// fabric: material, hinge dashpots, compression, porosity
+void readFabric(const scopedEntryReader& top, structureSpec& s)
+{
+    const dictionary* d = top.optionalDict("fabric");
+    if (!d)
+    {
+        return;
+    }
+    const scopedEntryReader fr(*d, "fabric");
+    readMaterial(fr, sheetKeys, s.fabric);
+    s.bendingDamping = fr.nonNegative
+    (
+        "bendingDamping", "decay rate of each hinge's bending [1/s]", 0
+    );
+    s.bendingDampingScheme = fr.choice
+    (
+        "bendingDampingScheme", wordList{"explicit", "implicit"},
+        "hinge dashpot scheme", s.bendingDampingScheme
+    );
+    s.bendingDampingFilter = fr.choice
+    (
+        "bendingDampingFilter", wordList{"none", "highPass"},
+        "hinge dashpot filter", s.bendingDampingFilter
+    );
+    if (s.bendingDampingFilter == "highPass" && s.bendingDampingScheme != "implicit")
+    {
+        fr.fail
         (
-            bendingDampingFilter == "highPass"
-         && bendingDampingScheme != "implicit"
-        )
-        {
-            fr.fail
-            (
-                "bendingDampingFilter",
-                "highPass needs bendingDampingScheme implicit"
-            );
-        }
-        compressionRatio = fr.inRange
+            "bendingDampingFilter",
+            "highPass needs bendingDampingScheme implicit"
+        );
+    }
+    s.compressionRatio = fr.inRange
+    (
+        "compressionRatio",
+        "the springs' stiffness in compression over their stiffness",
+        0, 1, s.compressionRatio
+    );
+    if (fr.found("compressionRatio") && s.fabric.law != CANOPY_SPRING_MODEL_II)
+    {
+        fr.fail
         (
             "compressionRatio",
-            "the springs' stiffness in compression over their stiffness",
-            0, 1, compressionRatio
+            "needs law modelII (the law is " + lawName(s.fabric.law) + ")"
         );
-        if (fr.found("compressionRatio") && fabric.law != CANOPY_SPRING_MODEL_II)
+    }
+    if (const dictionary* pd = fr.optionalDict("porosity"))
+    {
+        const scopedEntryReader pr(*pd, "fabric.porosity");
+        s.alpha = pr.nonNegative("alpha", "Darcy coefficient [Pa s/m]", 0);
+        s.beta = pr.nonNegative("beta", "Forchheimer coefficient [Pa s^2/m^2]", 0);
+        pr.warnUnused(wordList{"alpha", "beta"});
+    }
+    fr.warnUnused
+    (
+        wordList
         {
-            fr.fail
-            (
-                "compressionRatio",
-                "needs law modelII (the law is " + lawName(fabric.law) + ")"
-            );
+            "arealDensity", "stiffness", "tensileStiffness", "damping",
+            "bendingDamping", "bendingDampingScheme",
+            "bendingDampingFilter", "compressionRatio", "law", "porosity"
         }
-        if (const dictionary* pd = fr.optionalDict("porosity"))
-        {
-            const entryReader pr(*pd, "fabric.porosity");
-            alpha = pr.nonNegative("alpha", "Darcy coefficient [Pa s/m]", 0);
-            beta = pr.nonNegative("beta", "Forchheimer coefficient [Pa s^2/m^2]", 0);
-            pr.warnUnused(wordList{"alpha", "beta"}, "");
-        }
-        fr.warnUnused
+    );
+}
+
+
+// radialTapes: enabled (circular canopies only) and their material
+void readRadialTapes(const scopedEntryReader& top, structureSpec& s)
+{
+    const dictionary* d = top.optionalDict("radialTapes");
+    if (!d)
+    {
+        return;
+    }
+    const scopedEntryReader tr(*d, "radialTapes");
+    s.tapes = tr.flag("enabled", false);
+    if (s.tapes && !s.circular)
+    {
+        tr.fail
         (
-            wordList
-            {
-                "arealDensity", "stiffness", "tensileStiffness", "damping",
-                "bendingDamping", "bendingDampingScheme",
-                "bendingDampingFilter", "compressionRatio", "law", "porosity"
-            },
-            ""
+            "enabled",
+            "= true, but radial tapes need a circular canopy "
+            "(flatCircular or parabolic), not canopy type " + s.type
         );
     }
-
-    // ---- radial tapes --------------------------------------------------------
-
-    const wordList materialUsed
+    if (s.tapes)
     {
-        "linearDensity", "stiffness", "EA", "damping", "law"
-    };
-
-    bool tapes = false;
-    if (const dictionary* d = top.optionalDict("radialTapes"))
-    {
-        const entryReader tr(*d, "radialTapes");
-        tapes = tr.getBool("enabled", false);
-        if (tapes && !circular)
-        {
-            tr.fail
-            (
-                "enabled",
-                "= true, but radial tapes need a circular canopy "
-                "(flatCircular or parabolic), not canopy type " + type
-            );
-        }
-        if (tapes)
-        {
-            readMaterial(tr, lineKeys, circ.tape);
-        }
-        wordList used(materialUsed);
-        used.append("enabled");
-        tr.warnUnused(used, "");
+        readMaterial(tr, lineKeys, s.circ.tape);
     }
+    wordList used(lineMaterialEntries);
+    used.append("enabled");
+    tr.warnUnused(used);
+}
 
-    // ---- lines ---------------------------------------------------------------
 
-    canopy_lines_spec lines = canopy_lines_spec_default();
-    if (nLines > 0)
+// lines: length, segment length and material (when there are lines)
+void readLines(structureSpec& s)
+{
+    const scopedEntryReader lr
+    (
+        s.linesDict ? *s.linesDict : dictionary::null, "lines"
+    );
+    if (s.nLines > 0)
     {
-        lines.line_length = lr.positive
+        s.lines.line_length = lr.positive
         (
             "length",
             "the suspension line length [m] when lines.number > 0"
         );
-        lines.edge_length = lr.positive
+        s.lines.edge_length = lr.positive
         (
-            "edgeLength", "target line segment length [m]", edge
+            "edgeLength", "target line segment length [m]", s.edge
         );
-        readMaterial(lr, lineKeys, lines.line);
+        readMaterial(lr, lineKeys, s.lines.line);
     }
-    if (linesDict)
+    if (s.linesDict)
     {
-        wordList used(materialUsed);
+        wordList used(lineMaterialEntries);
         used.append(wordList{"number", "length", "edgeLength"});
-        lr.warnUnused(used, "");
+        lr.warnUnused(used);
     }
+}
 
-    // ---- payload -------------------------------------------------------------
 
-    bool payloadFixed = false;
-    if (nLines > 0)
+// payload: required with lines, ignored (with a warning) without
+void readPayload(const scopedEntryReader& top, structureSpec& s)
+{
+    if (s.nLines > 0)
     {
-        const entryReader pr
+        const scopedEntryReader pr
         (
-            top.requiredDict
+            top.subReader
             (
                 "payload",
                 "payload { mass <kg>; } (there are suspension lines)"
-            ),
-            "payload"
+            )
         );
-        lines.payload_mass = pr.nonNegative("mass", "payload mass [kg]");
-        payloadFixed = pr.getBool("fixed", false);
-        pr.warnUnused(wordList{"mass", "fixed"}, "");
+        s.lines.payload_mass = pr.nonNegative("mass", "payload mass [kg]");
+        s.payloadFixed = pr.flag("fixed", false);
+        pr.warnUnused(wordList{"mass", "fixed"});
     }
     else if (top.found("payload"))
     {
-        IOWarningIn(whereName, dict_)
+        IOWarningInFunction(top.dict())
             << "Sub-dictionary 'payload' is ignored: there are no suspension "
             << "lines (lines.number = 0 or no lines)" << endl;
     }
+}
 
-    // ---- guide wire ----------------------------------------------------------
 
-    bool guidePayload = false;
-    bool guideApex = false;
-    vector guideDirection(Zero);
-    const dictionary* guideDict = top.optionalDict("guideWire");
-    if (guideDict)
+// guideWire: which nodes slide on a wire, and its direction
+void readGuideWire(const scopedEntryReader& top, structureSpec& s)
+{
+    const dictionary* d = top.optionalDict("guideWire");
+    if (!d)
     {
-        const entryReader gr(*guideDict, "guideWire");
-        guidePayload = gr.getBool("payload", true);
-        guideApex = gr.getBool("apex", true);
-        guideDirection = gr.getVector("direction", Zero);
-        if (gr.found("direction") && !(mag(guideDirection) > 0))
-        {
-            gr.fail("direction", "must be a non-zero vector");
-        }
-        if (guidePayload && nLines == 0)
-        {
-            gr.fail("payload", "= true needs suspension lines and a payload");
-        }
-        gr.warnUnused(wordList{"payload", "apex", "direction"}, "");
+        return;
     }
+    const scopedEntryReader gr(*d, "guideWire");
+    s.guidePayload = gr.flag("payload", true);
+    s.guideApex = gr.flag("apex", true);
+    s.guideDirection = gr.nonZeroVector("direction", "the wire's direction", Zero);
+    if (s.guidePayload && s.nLines == 0)
+    {
+        gr.fail("payload", "= true needs suspension lines and a payload");
+    }
+    gr.warnUnused(wordList{"payload", "apex", "direction"});
+}
 
-    // ---- gravity, integrator, fixed nodes ------------------------------------
 
-    const vector g = top.getVector("gravity", defaultGravity);
-    initialVelocity_ = top.getVector("initialVelocity", Zero);
-
+// integrator: libcanopy's time integrator and its controls
+void readIntegrator(const scopedEntryReader& top, structureSpec& s)
+{
+    const dictionary* d = top.optionalDict("integrator");
+    if (!d)
+    {
+        return;
+    }
     wordList integrators(canopy_integrator_count());
     forAll(integrators, i)
     {
         integrators[i] = word(canopy_integrator_name(i));
     }
-
-    word integratorName("rk4");
-    scalar maxOmegaDt = 0.1;
-    scalar hhtAlpha = -0.1;
-    scalar newtonTol = 1e-10;
-    label newtonIter = 25;
-    scalar speedLimit = 1e4;
-    if (const dictionary* d = top.optionalDict("integrator"))
-    {
-        const entryReader ir(*d, "integrator");
-        integratorName = ir.select("type", integrators, "integrator", integratorName);
-        maxOmegaDt = ir.positive("maxOmegaDt", "sub-step bound omega dt", maxOmegaDt);
-        hhtAlpha = ir.inRange("hhtAlpha", "HHT alpha", -1.0/3.0, 0, hhtAlpha);
-        newtonTol = ir.positive("tolerance", "Newton relative tolerance", newtonTol);
-        if (ir.found("maxIterations"))
+    const scopedEntryReader ir(*d, "integrator");
+    s.integratorName = ir.choice("type", integrators, "integrator", s.integratorName);
+    s.maxOmegaDt = ir.positive("maxOmegaDt", "sub-step bound omega dt", s.maxOmegaDt);
+    s.hhtAlpha = ir.inRange("hhtAlpha", "HHT alpha", -1.0/3.0, 0, s.hhtAlpha);
+    s.newtonTol = ir.positive("tolerance", "Newton relative tolerance", s.newtonTol);
+    s.newtonIter = ir.integerAtLeast
+    (
+        "maxIterations", "Newton iteration limit", 1, s.newtonIter
+    );
+    s.speedLimit = ir.positive("speedLimit", "runaway speed [m/s]", s.speedLimit);
+    ir.warnUnused
+    (
+        wordList
         {
-            newtonIter = ir.getLabel("maxIterations", "Newton iteration limit");
-            if (newtonIter < 1)
-            {
-                ir.fail
-                (
-                    "maxIterations",
-                    "= " + std::to_string(newtonIter) + " must be > 0"
-                );
-            }
+            "type", "maxOmegaDt", "hhtAlpha", "tolerance",
+            "maxIterations", "speedLimit"
         }
-        speedLimit = ir.positive("speedLimit", "runaway speed [m/s]", speedLimit);
-        ir.warnUnused
-        (
-            wordList
-            {
-                "type", "maxOmegaDt", "hhtAlpha", "tolerance",
-                "maxIterations", "speedLimit"
-            },
-            ""
-        );
-    }
+    );
+}
 
-    bool fixSkirt = false;
-    bool fixAll = false;
-    if (const dictionary* d = top.optionalDict("fixedNodes"))
+
+// fixedNodes: the rim, or everything
+void readFixedNodes(const scopedEntryReader& top, structureSpec& s)
+{
+    const dictionary* d = top.optionalDict("fixedNodes");
+    if (!d)
     {
-        const entryReader fr(*d, "fixedNodes");
-        fixSkirt = fr.getBool("skirt", false);
-        fixAll = fr.getBool("all", false);
-        fr.warnUnused(wordList{"skirt", "all"}, "");
+        return;
     }
+    const scopedEntryReader fr(*d, "fixedNodes");
+    s.fixSkirt = fr.flag("skirt", false);
+    s.fixAll = fr.flag("all", false);
+    fr.warnUnused(wordList{"skirt", "all"});
+}
 
 
-    // ---- build -------------------------------------------------------------
+// The builder specifications from what was read
+void completeBuildSpecs(structureSpec& s)
+{
+    s.circ.edge_length = s.edge;
+    s.cross.edge_length = s.edge;
+    s.rect.edge_length = s.edge;
+    for (direction d = 0; d < 3; ++d)
+    {
+        s.circ.center[d] = s.centre[d];
+        s.cross.center[d] = s.centre[d];
+    }
+    s.rect.origin[0] = s.centre.x() - 0.5*s.rect.width;
+    s.rect.origin[1] = s.centre.y() - 0.5*s.rect.length;
+    s.rect.origin[2] = s.centre.z();
+    s.circ.n_attachments = s.nAttach;
+    s.cross.n_attachments = s.nAttach;
+    s.circ.radial_tapes = s.tapes ? 1 : 0;
+    s.circ.fabric = s.fabric;
+    s.cross.fabric = s.fabric;
+    s.rect.fabric = s.fabric;
+}
+
+
+// Every entry of canopyProperties, in the order the errors are reported
+structureSpec readStructure
+(
+    const dictionary& dict,
+    const vector& defaultGravity
+)
+{
+    structureSpec s;
+    const scopedEntryReader top(dict, "");
+    const scopedEntryReader cr
+    (
+        top.subReader("canopy", "canopy { type ...; }")
+    );
+    const wordList canopyUsed(readCanopyShape(cr, s));
+    readLineCount(top, s);
+    readAttachments(cr, s, canopyUsed);
+    readFabric(top, s);
+    readRadialTapes(top, s);
+    readLines(s);
+    readPayload(top, s);
+    readGuideWire(top, s);
+    s.g = top.vectorValue("gravity", "gravity [m/s^2]", defaultGravity);
+    s.initialVelocity = top.vectorValue
+    (
+        "initialVelocity", "velocity of every node at the start [m/s]", Zero
+    );
+    readIntegrator(top, s);
+    readFixedNodes(top, s);
+    completeBuildSpecs(s);
+    return s;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::canopyStructure::build(const vector& defaultGravity)
+{
+    // ---- read: every entry checked before anything is built ----------------
+
+    const structureSpec s(readStructure(dict_, defaultGravity));
+    initialVelocity_ = s.initialVelocity;
+
+    // ---- build ---------------------------------------------------------------
 
     {
         canopy_model* m = nullptr;
@@ -873,43 +653,29 @@ void Foam::canopyStructure::build(const vector& defaultGravity)
     }
     canopy_model* m = model_.get();
 
-    std::vector<int> attach(nAttach > 0 ? nAttach : 1, -1);
+    std::vector<int> attach(s.nAttach > 0 ? s.nAttach : 1, -1);
     int st = CANOPY_OK;
-    if (circular)
+    if (s.circular)
     {
-        circ.edge_length = edge;
-        for (direction d = 0; d < 3; ++d) circ.center[d] = centre[d];
-        circ.n_attachments = nAttach;
-        circ.radial_tapes = tapes ? 1 : 0;
-        circ.fabric = fabric;
-        st = canopy_build_circular(m, &circ, attach.data());
+        st = canopy_build_circular(m, &s.circ, attach.data());
     }
-    else if (type == "cross")
+    else if (s.type == "cross")
     {
-        cross.edge_length = edge;
-        for (direction d = 0; d < 3; ++d) cross.center[d] = centre[d];
-        cross.n_attachments = nAttach;
-        cross.fabric = fabric;
-        st = canopy_build_cross(m, &cross, attach.data());
+        st = canopy_build_cross(m, &s.cross, attach.data());
     }
     else
     {
-        rect.edge_length = edge;
-        rect.origin[0] = centre.x() - 0.5*rect.width;
-        rect.origin[1] = centre.y() - 0.5*rect.length;
-        rect.origin[2] = centre.z();
-        rect.fabric = fabric;
-        st = canopy_build_rectangle(m, &rect);
+        st = canopy_build_rectangle(m, &s.rect);
     }
     if (st != CANOPY_OK)
     {
         FatalErrorInFunction
-            << "libcanopy could not build the " << type << " canopy of "
+            << "libcanopy could not build the " << s.type << " canopy of "
             << dict_.name() << ": " << canopy_model_message(m) << nl
             << exit(FatalError);
     }
 
-    attachments_.setSize(nAttach);
+    attachments_.setSize(s.nAttach);
     forAll(attachments_, k)
     {
         attachments_[k] = attach[k];
@@ -917,7 +683,7 @@ void Foam::canopyStructure::build(const vector& defaultGravity)
 
     // Pin the rim: nodes on boundary edges (edges of one triangle only),
     // without a vent's
-    if (fixAll)
+    if (s.fixAll)
     {
         // A rigid, immobile structure (verification cases: fixed plates)
         for (label i = 0; i < nNodes(); ++i)
@@ -925,7 +691,7 @@ void Foam::canopyStructure::build(const vector& defaultGravity)
             check(canopy_model_set_fixed(m, i, 1), "build", "set_fixed");
         }
     }
-    else if (fixSkirt)
+    else if (s.fixSkirt)
     {
         const triFaceList tris(triangles());
         std::map<std::pair<label, label>, label> edgeCount;
@@ -939,17 +705,17 @@ void Foam::canopyStructure::build(const vector& defaultGravity)
             }
         }
         const pointField x(points());
-        const scalar rCut = 0.25*(circ.diameter + circ.vent_diameter);
+        const scalar rCut = 0.25*(s.circ.diameter + s.circ.vent_diameter);
         for (const auto& ec : edgeCount)
         {
             if (ec.second != 1) continue;
             for (const label i : {ec.first.first, ec.first.second})
             {
-                if (circular)
+                if (s.circular)
                 {
                     const scalar r = std::hypot
                     (
-                        x[i].x() - centre.x(), x[i].y() - centre.y()
+                        x[i].x() - s.centre.x(), x[i].y() - s.centre.y()
                     );
                     if (r < rCut) continue;     // a vent node
                 }
@@ -964,33 +730,33 @@ void Foam::canopyStructure::build(const vector& defaultGravity)
 
     // Lines: the length must exceed the attachments' radius (as libcanopy
     // requires), reported here on the entry
-    if (nLines > 0)
+    if (s.nLines > 0)
     {
         const pointField x(points());
         scalar cx = 0, cy = 0;
         for (const int i : attach)
         {
-            cx += x[i].x()/nAttach;
-            cy += x[i].y()/nAttach;
+            cx += x[i].x()/s.nAttach;
+            cy += x[i].y()/s.nAttach;
         }
         scalar rho = 0;
         for (const int i : attach)
         {
-            rho += std::hypot(x[i].x() - cx, x[i].y() - cy)/nAttach;
+            rho += std::hypot(x[i].x() - cx, x[i].y() - cy)/s.nAttach;
         }
-        if (!(lines.line_length > rho))
+        if (!(s.lines.line_length > rho))
         {
             OStringStream os;
-            os  << "= " << lines.line_length << " must exceed the skirt radius "
-                << rho << " m (mean distance of the " << nAttach
+            os  << "= " << s.lines.line_length << " must exceed the skirt radius "
+                << rho << " m (mean distance of the " << s.nAttach
                 << " attachment points from their centroid)";
-            lr.fail("length", os.str());
+            scopedEntryReader(*s.linesDict, "lines").fail("length", os.str());
         }
 
         int payload = -1;
         st = canopy_build_suspension_lines
         (
-            m, attach.data(), nAttach, &lines, &payload
+            m, attach.data(), s.nAttach, &s.lines, &payload
         );
         if (st != CANOPY_OK)
         {
@@ -1000,7 +766,7 @@ void Foam::canopyStructure::build(const vector& defaultGravity)
                 << exit(FatalError);
         }
         payloadNode_ = payload;
-        if (payloadFixed)
+        if (s.payloadFixed)
         {
             check
             (
@@ -1012,19 +778,19 @@ void Foam::canopyStructure::build(const vector& defaultGravity)
 
     // ---- model settings ------------------------------------------------------
 
-    const double gArr[3] = {g.x(), g.y(), g.z()};
+    const double gArr[3] = {s.g.x(), s.g.y(), s.g.z()};
     check(canopy_model_set_gravity(m, gArr), FUNCTION_NAME, "canopy_model_set_gravity");
-    check(canopy_model_set_porosity(m, alpha, beta), FUNCTION_NAME, "canopy_model_set_porosity");
+    check(canopy_model_set_porosity(m, s.alpha, s.beta), FUNCTION_NAME, "canopy_model_set_porosity");
     check
     (
-        canopy_model_set_bending_damping(m, bendingDamping),
+        canopy_model_set_bending_damping(m, s.bendingDamping),
         FUNCTION_NAME, "canopy_model_set_bending_damping"
     );
     check
     (
         canopy_model_set_bending_damping_implicit
         (
-            m, bendingDampingScheme == "implicit"
+            m, s.bendingDampingScheme == "implicit"
         ),
         FUNCTION_NAME, "canopy_model_set_bending_damping_implicit"
     );
@@ -1032,32 +798,32 @@ void Foam::canopyStructure::build(const vector& defaultGravity)
     (
         canopy_model_set_bending_damping_filter
         (
-            m, bendingDampingFilter == "highPass"
+            m, s.bendingDampingFilter == "highPass"
         ),
         FUNCTION_NAME, "canopy_model_set_bending_damping_filter"
     );
     check
     (
-        canopy_model_set_fabric_compression(m, compressionRatio),
+        canopy_model_set_fabric_compression(m, s.compressionRatio),
         FUNCTION_NAME, "canopy_model_set_fabric_compression"
     );
     check
     (
-        canopy_model_set_integrator(m, integratorName.c_str()),
+        canopy_model_set_integrator(m, s.integratorName.c_str()),
         FUNCTION_NAME, "canopy_model_set_integrator"
     );
-    check(canopy_model_set_max_omega_dt(m, maxOmegaDt), FUNCTION_NAME, "canopy_model_set_max_omega_dt");
-    check(canopy_model_set_hht_alpha(m, hhtAlpha), FUNCTION_NAME, "canopy_model_set_hht_alpha");
+    check(canopy_model_set_max_omega_dt(m, s.maxOmegaDt), FUNCTION_NAME, "canopy_model_set_max_omega_dt");
+    check(canopy_model_set_hht_alpha(m, s.hhtAlpha), FUNCTION_NAME, "canopy_model_set_hht_alpha");
     check
     (
-        canopy_model_set_implicit_controls(m, newtonTol, newtonIter),
+        canopy_model_set_implicit_controls(m, s.newtonTol, s.newtonIter),
         FUNCTION_NAME, "canopy_model_set_implicit_controls"
     );
-    check(canopy_model_set_speed_limit(m, speedLimit), FUNCTION_NAME, "canopy_model_set_speed_limit");
+    check(canopy_model_set_speed_limit(m, s.speedLimit), FUNCTION_NAME, "canopy_model_set_speed_limit");
 
-    if (guidePayload || guideApex)
+    if (s.guidePayload || s.guideApex)
     {
-        setGuideWire(guidePayload, guideApex, guideDirection, g, centre);
+        setGuideWire(s.guidePayload, s.guideApex, s.guideDirection, s.g, s.centre);
     }
 
     if (initialVelocity_ != vector::zero)
@@ -1079,10 +845,10 @@ void Foam::canopyStructure::build(const vector& defaultGravity)
 
     if (debug)
     {
-        Info<< "canopyStructure: " << type << " canopy, " << nNodes()
+        Info<< "canopyStructure: " << s.type << " canopy, " << nNodes()
             << " nodes, " << nSprings() << " springs, " << nTriangles()
-            << " triangles, " << nLines << " lines, integrator "
-            << integratorName << endl;
+            << " triangles, " << s.nLines << " lines, integrator "
+            << s.integratorName << endl;
     }
 }
 

@@ -27,6 +27,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "canopyStructure.H"
+#include "scopedEntryReader.H"
 #include "Time.H"
 #include "OSspecific.H"
 #include "OStringStream.H"
@@ -162,6 +163,7 @@ bool Foam::canopyStructure::openOutput
         return false;
     }
     output_.reset(o);
+    outputFile_ = path;
     return true;
 }
 
@@ -174,33 +176,46 @@ Foam::fileName Foam::canopyStructure::outputPath(const Time& runTime)
 }
 
 
+void Foam::canopyStructure::createOutput(const fileName& path)
+{
+    if (Pstream::master())
+    {
+        string message;
+        if (!openOutput(path, CANOPY_OUTPUT_CREATE, message))
+        {
+            FatalErrorInFunction
+                << message.c_str() << nl << exit(FatalError);
+        }
+    }
+    haveLastWrite_ = false;
+}
+
+
 bool Foam::canopyStructure::write
 (
-    const Time& runTime,
+    const fileName& path,
     const vector* frameOrigin
 )
 {
     const scalar t = time();
 
-    if (!warnedTime_ && mag(t - runTime.value()) > timeTolerance(runTime))
-    {
-        WarningInFunction
-            << "The structure's time " << t << " differs from the run time "
-            << runTime.value() << "; the output step is stamped with the "
-            << "structure's time" << endl;
-        warnedTime_ = true;
-    }
-
     // This state is already the last step in the file
-    if (haveLastWrite_ && mag(t - lastWriteTime_) <= 1e-12*max(1.0, mag(t)))
+    if
+    (
+        haveLastWrite_ && path == outputFile_
+     && mag(t - lastWriteTime_) <= 1e-12*max(1.0, mag(t))
+    )
     {
         return false;
     }
 
     if (Pstream::master())
     {
-        const fileName path(outputPath(runTime));
         string message;
+        if (output_ && path != outputFile_)
+        {
+            output_.reset();
+        }
         if
         (
             !output_
@@ -232,10 +247,30 @@ bool Foam::canopyStructure::write
                 << nl << exit(FatalError);
         }
     }
+    outputFile_ = path;
 
     lastWriteTime_ = t;
     haveLastWrite_ = true;
     return true;
+}
+
+
+bool Foam::canopyStructure::write
+(
+    const Time& runTime,
+    const vector* frameOrigin
+)
+{
+    const scalar t = time();
+    if (!warnedTime_ && mag(t - runTime.value()) > timeTolerance(runTime))
+    {
+        WarningInFunction
+            << "The structure's time " << t << " differs from the run time "
+            << runTime.value() << "; the output step is stamped with the "
+            << "structure's time" << endl;
+        warnedTime_ = true;
+    }
+    return write(outputPath(runTime), frameOrigin);
 }
 
 
@@ -419,6 +454,7 @@ void Foam::canopyStructure::readState
     }
 
     restarted_ = true;
+    outputFile_ = path;
     lastWriteTime_ = stepTime;
     haveLastWrite_ = true;
 
@@ -447,36 +483,21 @@ Foam::fileName Foam::canopyStructure::initialStateFile
     const Time& runTime
 ) const
 {
-    const word key("initialState");
-    const entry* e = dict_.findEntry(key, keyType::LITERAL);
-    if (!e)
+    const scopedEntryReader top(dict_, "");
+    if (!top.found("initialState"))
     {
         return fileName();
     }
-    if (e->isDict())
-    {
-        FatalIOErrorInFunction(dict_)
-            << "Entry '" << key << "' must be a file name (e.g. "
-            << defaultInitialStateName << "), not a sub-dictionary" << nl
-            << exit(FatalIOError);
-    }
-    ITstream& is = e->stream();
-    if (is.size() != 1 || !is[0].isStringType())
-    {
-        FatalIOErrorInFunction(dict_)
-            << "Entry '" << key << "' must be a single file name (e.g. "
-            << defaultInitialStateName << "), found " << is.toString().c_str()
-            << nl << exit(FatalIOError);
-    }
-    fileName file(is[0].stringToken());
-    file.expand();
-    if (file.ext() != "h5")
-    {
-        FatalIOErrorInFunction(dict_)
-            << "Entry '" << key << "' = " << file << " must name an HDF5"
-            << " file ending in .h5 (as canopyFold writes)" << nl
-            << exit(FatalIOError);
-    }
+    fileName file
+    (
+        top.fileNameWithExt
+        (
+            "initialState",
+            "an HDF5 file as canopyFold writes, e.g. "
+          + defaultInitialStateName,
+            "h5"
+        )
+    );
     if (!file.isAbsolute())
     {
         file = runTime.globalPath()/file;
