@@ -4,7 +4,6 @@
 \*---------------------------------------------------------------------------*/
 
 #include "canopyCoupling.H"
-#include "extrapolatedCalculatedFvPatchFields.H"
 #include "surfaceInterpolate.H"
 #include "canopy.h"
 #include "switchToken.H"
@@ -13,7 +12,6 @@
 #include "addedMassStabiliser.H"
 #include "treeDataCell.H"
 #include "indexedOctree.H"
-#include "pressureFaceGradient.H"
 #include "inletOutletFvPatchFields.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
@@ -594,7 +592,6 @@ Foam::canopyCoupling::canopyCoupling
     markerForce_(Zero),
     pressureForce_(Zero),
     slip_(0),
-    needsNonOrthCorrection_(meshNeedsNonOrthCorrection(mesh)),
     stopIfNotConverged_(true),
     restartFluid_(false),
     ibForceLoad_(false),
@@ -1020,87 +1017,6 @@ const Foam::surfaceScalarField& Foam::canopyCoupling::faceForce() const
         }
     }
     return faceForce_();
-}
-
-
-Foam::tmp<Foam::volVectorField> Foam::canopyCoupling::reconstruct
-(
-    const surfaceScalarField& ssf
-) const
-{
-    if (!reconstructInverse_.valid())
-    {
-        SfHat_.reset
-        (
-            new surfaceVectorField("canopySfHat", mesh_.Sf()/mesh_.magSf())
-        );
-        reconstructInverse_.reset
-        (
-            new volTensorField
-            (
-                "canopyReconstructInverse",
-                inv(fvc::surfaceSum(SfHat_()*mesh_.Sf()))
-            )
-        );
-    }
-    tmp<volVectorField> tfield
-    (
-        new volVectorField
-        (
-            IOobject
-            (
-                "reconstruct(" + ssf.name() + ')',
-                ssf.instance(),
-                mesh_,
-                IOobject::NO_READ,
-                IOobject::NO_WRITE
-            ),
-            mesh_,
-            dimensioned<vector>(ssf.dimensions()/dimArea, Zero),
-            extrapolatedCalculatedFvPatchField<vector>::typeName
-        )
-    );
-
-    // inv(sum_f SfHat Sf) & sum_f SfHat ssf_f, summed face by face into
-    // the cells (fvc::surfaceSum without the face field of the products)
-    vectorField& result = tfield.ref().primitiveFieldRef();
-    const labelUList& own = mesh_.owner();
-    const labelUList& nei = mesh_.neighbour();
-    const vectorField& SfHat = SfHat_().primitiveField();
-    const scalarField& values = ssf.primitiveField();
-    forAll(own, facei)
-    {
-        const vector v(SfHat[facei]*values[facei]);
-        result[own[facei]] += v;
-        result[nei[facei]] += v;
-    }
-    forAll(mesh_.boundary(), patchi)
-    {
-        const labelUList& faceCells = mesh_.boundary()[patchi].faceCells();
-        const vectorField& pSfHat = SfHat_().boundaryField()[patchi];
-        const scalarField& pValues = ssf.boundaryField()[patchi];
-        forAll(faceCells, i)
-        {
-            result[faceCells[i]] += pSfHat[i]*pValues[i];
-        }
-    }
-    const tensorField& inverse = reconstructInverse_().primitiveField();
-    forAll(result, celli)
-    {
-        result[celli] = inverse[celli] & result[celli];
-    }
-
-    tfield.ref().correctBoundaryConditions();
-    return tfield;
-}
-
-
-Foam::tmp<Foam::surfaceScalarField> Foam::canopyCoupling::faceGradient
-(
-    const volScalarField& p
-) const
-{
-    return pressureFaceGradient(p, needsNonOrthCorrection_);
 }
 
 
