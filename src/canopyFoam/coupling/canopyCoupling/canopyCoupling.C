@@ -5,7 +5,6 @@
 
 #include "canopyCoupling.H"
 #include "surfaceInterpolate.H"
-#include "canopy.h"
 #include "switchToken.H"
 #include "readChoice.H"
 #include "readEntry.H"
@@ -229,36 +228,6 @@ Foam::tmp<Foam::scalarField> Foam::canopyCoupling::localCellSizes
 }
 
 
-Foam::IOobject Foam::canopyCoupling::couplingStateIO
-(
-    const IOobject::readOption r
-) const
-{
-    return IOobject
-    (
-        "canopyCoupling",
-        mesh_.time().timeName(),
-        "uniform",
-        mesh_,
-        r,
-        IOobject::NO_WRITE,
-        false
-    );
-}
-
-
-Foam::labelList Foam::canopyCoupling::readMarkerLevels() const
-{
-    IOobject io(couplingStateIO(IOobject::MUST_READ));
-    if (mesh_.time().value() == 0 || !io.typeHeaderOk<IOdictionary>(true))
-    {
-        return labelList();
-    }
-    const IOdictionary state(io);
-    return state.getOrDefault<labelList>("markerLevels", labelList());
-}
-
-
 void Foam::canopyCoupling::spreadForce()
 {
     sectionTimer timer(ibSeconds_);
@@ -274,17 +243,8 @@ void Foam::canopyCoupling::spreadForce()
 }
 
 
-void Foam::canopyCoupling::readCouplingState()
+void Foam::canopyCoupling::readCouplingState(const IOdictionary& state)
 {
-    IOobject io(couplingStateIO(IOobject::MUST_READ));
-    if (!io.typeHeaderOk<IOdictionary>(true))
-    {
-        WarningInFunction
-            << "No " << io.objectPath() << ": the immersed-boundary force"
-            << " restarts from zero and the frame from the payload" << endl;
-        return;
-    }
-    const IOdictionary state(io);
     const vectorField F(state.get<vectorField>("markerForce"));
     if (F.size() != markerForceTotal_.size())
     {
@@ -329,7 +289,7 @@ void Foam::canopyCoupling::readCouplingState()
         else
         {
             WarningInFunction
-                << "No entry 'addedMassBalance' in " << io.objectPath()
+                << "No entry 'addedMassBalance' in " << state.objectPath()
                 << ": the added-mass stabiliser's first balance after the"
                 << " restart is zero" << endl;
         }
@@ -339,13 +299,8 @@ void Foam::canopyCoupling::readCouplingState()
 }
 
 
-void Foam::canopyCoupling::writeCouplingState() const
+void Foam::canopyCoupling::addCouplingState(dictionary& state) const
 {
-    // ASCII (a dictionary cannot hold binary fields) with every digit, so
-    // that a restart continues exactly: the precision is set before the
-    // entries are added, because an entry is formatted when it is added
-    const unsigned precision = IOstream::defaultPrecision(17);
-    IOdictionary state(couplingStateIO(IOobject::NO_READ));
     state.add("markerForce", markerForceTotal_);
     state.add("markerLevels", markers_->levels());
     state.add("frameOrigin", frameOrigin_);
@@ -360,14 +315,6 @@ void Foam::canopyCoupling::writeCouplingState() const
     }
     acceleration_->writeState(state);
     state.add("runStartTime", runStartTime_);
-    state.writeObject
-    (
-        IOstream::ASCII,
-        IOstream::currentVersion,
-        IOstream::UNCOMPRESSED,
-        true
-    );
-    IOstream::defaultPrecision(precision);
 }
 
 
@@ -483,69 +430,15 @@ void Foam::canopyCoupling::returnToStepStart()
 
 void Foam::canopyCoupling::writeSeries()
 {
-    if (!Pstream::master())
-    {
-        return;
-    }
-    const Time& runTime = mesh_.time();
-    if (!series_.valid())
-    {
-        const fileName dir
-        (
-            runTime.globalPath()/"postProcessing"/"canopy"
-           /runTime.timeName(runTime.startTime().value())
-        );
-        mkDir(dir);
-        series_.reset(new OFstream(dir/"canopy.dat"));
-        double g[3] = {0, 0, 0};
-        canopy_model_get_gravity(structure_.model(), g);
-        series_()
-            << "# canopyFoam time series of the canopy (ground frame)" << nl
-            << "# nominalDiameter " << nominalDiameter_ << nl
-            << "# totalMass " << structure_.totalMass() << nl
-            << "# rho " << rho_ << nl
-            << "# gravity " << g[0] << ' ' << g[1] << ' ' << g[2] << nl
-            << "# time payload_x payload_y payload_z payload_Ux payload_Uy"
-            << " payload_Uz force_x force_y force_z projected_diameter"
-            << " canopy_area kinetic spring gravity coupling_iterations"
-            << " residual slip substeps frame_x frame_y frame_z"
-            << " line_drag_x line_drag_y line_drag_z"
-            << " canopy_x canopy_y canopy_z" << nl;
-    }
-    const point x
-    (
-        structure_.hasPayload() ? structure_.payloadPosition() : point::zero
-    );
-    const vector v
-    (
-        structure_.hasPayload() ? structure_.payloadVelocity() : vector::zero
-    );
-    const scalar diameter = structure_.projectedDiameter();
-    const scalar area = structure_.canopyArea();
-    const canopyStructure::energy e(structure_.energies());
-    const vector lineDragForce
-    (
-        lineDrag_.valid() ? lineDrag_->total() : vector::zero
-    );
-    // The canopy's area-weighted centre (ground frame): with the payload,
-    // the suspension's direction
-    const scalarField areas(structure_.triangleAreas());
-    const point centre
-    (
-        sum(areas*structure_.triangleCentres())/max(sum(areas), VSMALL)
-    );
-    series_()
-        << runTime.value() << ' ' << x.x() << ' ' << x.y() << ' ' << x.z()
-        << ' ' << v.x() << ' ' << v.y() << ' ' << v.z()
-        << ' ' << pressureForce_.x() << ' ' << pressureForce_.y() << ' '
-        << pressureForce_.z() << ' ' << diameter << ' ' << area
-        << ' ' << e.kinetic << ' ' << e.spring << ' ' << e.gravity
-        << ' ' << iteration_ << ' ' << residual_ << ' ' << slip_
-        << ' ' << subSteps_ << ' ' << frameOrigin_.x() << ' '
-        << frameOrigin_.y() << ' ' << frameOrigin_.z()
-        << ' ' << lineDragForce.x() << ' ' << lineDragForce.y() << ' '
-        << lineDragForce.z() << ' ' << centre.x() << ' ' << centre.y()
-        << ' ' << centre.z() << endl;
+    couplingOutput::stepSummary step;
+    step.load = pressureForce_;
+    step.iterations = iteration_;
+    step.residual = residual_;
+    step.slip = slip_;
+    step.subSteps = subSteps_;
+    step.frameOrigin = frameOrigin_;
+    step.lineDrag = lineDrag_.valid() ? lineDrag_->total() : vector::zero;
+    output_->writeSeries(step);
 }
 
 
@@ -596,7 +489,6 @@ Foam::canopyCoupling::canopyCoupling
     restartFluid_(false),
     ibForceLoad_(false),
     tangentialLoad_(false),
-    nominalDiameter_(0),
     followPayload_(false),
     wind_(Zero),
     coarseMarkers_(0),
@@ -765,9 +657,18 @@ Foam::canopyCoupling::canopyCoupling
             << " the canopy starts from its initial shape" << endl;
     }
 
+    // The files; a restart's coupling state (null when there is none)
+    output_.reset(new couplingOutput(mesh, structure_, rho_));
+    const autoPtr<IOdictionary> state(output_->readState());
+
     // The triangles' subdivision: a restart's own (so that its markers
     // match the forces it carries), else from the spacing
-    labelList levels(readMarkerLevels());
+    labelList levels
+    (
+        state.valid()
+      ? state->getOrDefault<labelList>("markerLevels", labelList())
+      : labelList()
+    );
     const label nTriangles = structure_.nTriangles();
     if (levels.size() != nTriangles)
     {
@@ -809,7 +710,17 @@ Foam::canopyCoupling::canopyCoupling
     markerForceTotal_.setSize(markers_->size(), Zero);
     if (runTime.value() != 0)
     {
-        readCouplingState();
+        if (state.valid())
+        {
+            readCouplingState(state());
+        }
+        else
+        {
+            WarningInFunction
+                << "No " << output_->statePath() << ": the immersed-boundary"
+                << " force restarts from zero and the frame from the payload"
+                << endl;
+        }
     }
     frameVelocityStart_ = frameVelocity_;
     frameOriginTime_ = structure_.time();
@@ -832,19 +743,10 @@ Foam::canopyCoupling::canopyCoupling
 
     spreadForce();
 
-    // Nominal diameter (canopy.diameter, else that of a disc of the
-    // canopy's area), for drag coefficients in post-processing
-    const scalar area0 = structure_.canopyArea();
-    nominalDiameter_ =
-        structure_.dict().subOrEmptyDict("canopy").getOrDefault<scalar>
-        (
-            "diameter",
-            Foam::sqrt(4*area0/constant::mathematical::pi)
-        );
-
     Info<< "canopyCoupling: structure of " << structure_.nNodes()
         << " nodes, total mass " << structure_.totalMass() << " kg, canopy"
-        << " area " << area0 << " m^2, nominal diameter " << nominalDiameter_
+        << " area " << structure_.canopyArea() << " m^2, nominal diameter "
+        << output_->nominalDiameter()
         << " m" << nl;
     Info<< "canopyCoupling: "
         << (scheme_ == scheme::strong ? "strong" : "explicit") << " coupling, "
@@ -1286,8 +1188,11 @@ void Foam::canopyCoupling::writeStructure()
         sectionTimer timer(structureSeconds_);
         // with a mesh that follows the payload, also in the mesh's frame
         // (canopy-frame.xdmf beside case.foam)
-        structure_.write(mesh_.time(), followPayload_ ? &frameOrigin_ : nullptr);
-        writeCouplingState();
+        output_->write
+        (
+            followPayload_ ? &frameOrigin_ : nullptr,
+            [this](dictionary& state) { addCouplingState(state); }
+        );
     }
     Info<< "canopyCoupling: wall time since the run started: structure "
         << structureSeconds_ << " s, immersed boundary " << ibSeconds_
