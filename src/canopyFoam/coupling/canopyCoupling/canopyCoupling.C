@@ -11,7 +11,6 @@
 #include "addedMassStabiliser.H"
 #include "treeDataCell.H"
 #include "indexedOctree.H"
-#include "inletOutletFvPatchFields.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -271,11 +270,7 @@ void Foam::canopyCoupling::readCouplingState(const IOdictionary& state)
         }
         lineDrag_->setForces(L);
     }
-    if (followPayload_)
-    {
-        frameOrigin_ = state.get<vector>("frameOrigin");
-        frameVelocity_ = state.get<vector>("frameVelocity");
-    }
+    frame_->readState(state);
     if (addedMass_->active())
     {
         if (state.found("addedMassBalance"))
@@ -303,8 +298,7 @@ void Foam::canopyCoupling::addCouplingState(dictionary& state) const
 {
     state.add("markerForce", markerForceTotal_);
     state.add("markerLevels", markers_->levels());
-    state.add("frameOrigin", frameOrigin_);
-    state.add("frameVelocity", frameVelocity_);
+    frame_->writeState(state);
     if (lineDrag_.valid())
     {
         state.add("lineDragForce", lineDrag_->forces());
@@ -315,47 +309,6 @@ void Foam::canopyCoupling::addCouplingState(dictionary& state) const
     }
     acceleration_->writeState(state);
     state.add("runStartTime", runStartTime_);
-}
-
-
-void Foam::canopyCoupling::readFrame(const dictionary& dict)
-{
-    if (dict.found("frame") && !dict.isDict("frame"))
-    {
-        canopyEntry::fail
-        (
-            dict, "frame", "coupling.frame", "must be a sub-dictionary { type ..; }"
-        );
-    }
-    const dictionary& frame = dict.subOrEmptyDict("frame");
-    followPayload_ =
-        readChoice(frame, "type", "coupling.frame.type", {"fixed", "payload"})
-     == "payload";
-    canopyEntry::reportUnknown
-    (
-        frame, "coupling.frame.", {"type", "inletPatches", "wind"}
-    );
-    wind_ = canopyEntry::vectorValue(frame, "wind", "coupling.frame.wind", Zero);
-    if (!followPayload_)
-    {
-        return;
-    }
-    if (!structure_.hasPayload())
-    {
-        FatalIOErrorInFunction(frame)
-            << "Entry 'coupling.frame.type' = payload, but the structure has"
-            << " no payload" << exit(FatalIOError);
-    }
-    const wordReList names(frame.get<wordReList>("inletPatches"));
-    inletPatches_ = mesh_.boundaryMesh().patchSet(names, false).sortedToc();
-    if (inletPatches_.empty())
-    {
-        FatalIOErrorInFunction(frame)
-            << "Entry 'coupling.frame.inletPatches' = " << names
-            << " matches no patch; patches: " << mesh_.boundaryMesh().names()
-            << exit(FatalIOError);
-    }
-    frameVelocity_ = structure_.payloadVelocity();
 }
 
 
@@ -377,40 +330,11 @@ Foam::scalar Foam::canopyCoupling::residualNorm
 }
 
 
-Foam::tmp<Foam::scalarField>
-Foam::canopyCoupling::interfaceNormalVelocities() const
-{
-    tmp<scalarField> tvn(structure_.normalVelocities());
-    if (followPayload_)
-    {
-        tvn.ref() -= frameVelocity_ & structure_.triangleNormals();
-    }
-    return tvn;
-}
-
-
-Foam::tmp<Foam::vectorField>
-Foam::canopyCoupling::interfaceVelocities() const
-{
-    tmp<vectorField> tv(structure_.triangleVelocities());
-    if (followPayload_)
-    {
-        tv.ref() -= frameVelocity_;
-    }
-    return tv;
-}
-
-
 void Foam::canopyCoupling::placeMarkers()
 {
-    // The frame moves on with V while the structure advances through the
-    // step: a trial structure state at t + dt is seen from the frame's
-    // origin at t + dt, frameOrigin_ + V dt (frameOrigin_ itself moves at
-    // the end of the step)
-    const vector origin =
-        frameOrigin_
-      + frameVelocity_*(structure_.time() - frameOriginTime_);
-    markers_->update(structure_.model(), origin);
+    // A trial structure state at t + dt is seen from the frame's origin at
+    // t + dt (canopyFrame::originAt)
+    markers_->update(structure_.model(), frame_->originAt(structure_.time()));
 }
 
 
@@ -436,7 +360,7 @@ void Foam::canopyCoupling::writeSeries()
     step.residual = residual_;
     step.slip = slip_;
     step.subSteps = subSteps_;
-    step.frameOrigin = frameOrigin_;
+    step.frameOrigin = frame_->origin();
     step.lineDrag = lineDrag_.valid() ? lineDrag_->total() : vector::zero;
     output_->writeSeries(step);
 }
@@ -489,15 +413,7 @@ Foam::canopyCoupling::canopyCoupling
     restartFluid_(false),
     ibForceLoad_(false),
     tangentialLoad_(false),
-    followPayload_(false),
-    wind_(Zero),
     coarseMarkers_(0),
-    inletPatches_(),
-    frameOrigin_(Zero),
-    frameOriginTime_(0),
-    frameVelocity_(Zero),
-    frameAcceleration_(Zero),
-    frameVelocityStart_(Zero),
     failure_(),
     runStartTime_(mesh.time().startTime().value()),
     structureSeconds_(0),
@@ -615,7 +531,7 @@ Foam::canopyCoupling::canopyCoupling
             << " must be >= 1" << exit(FatalIOError);
     }
     acceleration_ = interfaceAcceleration::New(dict);
-    readFrame(dict);
+    frame_ = canopyFrame::New(dict, mesh, structure_);
 
     const word kernelName
     (
@@ -722,18 +638,17 @@ Foam::canopyCoupling::canopyCoupling
                 << endl;
         }
     }
-    frameVelocityStart_ = frameVelocity_;
-    frameOriginTime_ = structure_.time();
+    frame_->startAt(structure_.time());
     placeMarkers();
     if (lineDrag_.valid())
     {
-        lineDrag_->place(structure_.model(), frameOrigin_);
+        lineDrag_->place(structure_.model(), frame_->origin());
     }
 
     // Interface velocity from the structure's initial state
     const label nt = structure_.nTriangles();
-    normalVelocity_ = interfaceNormalVelocities();
-    triangleVelocity_ = interfaceVelocities();
+    normalVelocity_ = frame_->normalVelocities(structure_);
+    triangleVelocity_ = frame_->velocities(structure_);
     const string problem(updateStencils());
     if (!problem.empty())
     {
@@ -761,60 +676,21 @@ Foam::canopyCoupling::canopyCoupling
         Info<< ", line drag at " << lineDrag_->size() << " points ("
             << lineDrag_->nOutside() << " outside the mesh)";
     }
-    if (followPayload_)
-    {
-        Info<< ", the mesh follows the payload (inlet patches "
-            << inletPatches_ << ", wind " << wind_ << ")";
-    }
+    frame_->writeInfo(Info);
     Info<< nl << endl;
 }
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::canopyCoupling::setFarField
-(
-    fvPatchVectorField& Up,
-    const vector& value
-) const
-{
-    // inletOutlet (a side of the box): the far field where the air enters,
-    // zero gradient where it leaves, so the side does not confine the flow
-    if (isA<inletOutletFvPatchVectorField>(Up))
-    {
-        refCast<inletOutletFvPatchVectorField>(Up).refValue() = value;
-        return;
-    }
-    if (!Up.fixesValue())
-    {
-        FatalErrorInFunction
-            << "Entry 'coupling.frame.inletPatches' names patch "
-            << Up.patch().name() << " of " << Up.internalField().name()
-            << ", whose type " << Up.type() << " cannot take the far"
-            << " field's velocity: use fixedValue (an inlet) or inletOutlet"
-            << " (a side)" << exit(FatalError);
-    }
-    Up == value;
-}
-
-
 void Foam::canopyCoupling::beginTimeStep(volVectorField& U)
 {
-    frameVelocityStart_ = frameVelocity_;
-    if (followPayload_)
+    if (frame_->beginStep(U))
     {
-        // The frame moves at the payload's velocity over this step; its
-        // change is a uniform fictitious force -A on the air (faceForce())
-        const scalar dt = mesh_.time().deltaTValue();
-        frameVelocity_ = structure_.payloadVelocity();
-        frameAcceleration_ = (frameVelocity_ - frameVelocityStart_)/dt;
-        volVectorField::Boundary& Ub = U.boundaryFieldRef();
-        for (const label patchi : inletPatches_)
-        {
-            setFarField(Ub[patchi], wind_ - frameVelocity_);
-        }
-        normalVelocity_ = interfaceNormalVelocities();
-        triangleVelocity_ = interfaceVelocities();
+        // The interface velocities relative to the frame's new velocity;
+        // the fictitious force changed with its acceleration
+        normalVelocity_ = frame_->normalVelocities(structure_);
+        triangleVelocity_ = frame_->velocities(structure_);
         faceForce_.clear();
     }
     beginTimeStep();
@@ -825,7 +701,7 @@ void Foam::canopyCoupling::beginTimeStep()
 {
     failure_.clear();
     structure_.checkpoint();
-    frameOriginTime_ = structure_.time();
+    frame_->startAt(structure_.time());
     addedMass_->beginStep(structure_);
     markerForceStart_ = markerForceTotal_;
     acceleration_->reset();
@@ -901,22 +777,20 @@ const Foam::surfaceScalarField& Foam::canopyCoupling::faceForce() const
                 "canopyFaceForce",
                 (
                     fvc::interpolate(force_)
-                  - dimensionedVector("A", force_.dimensions(), frameAcceleration_)
+                  - dimensionedVector
+                    (
+                        "A", force_.dimensions(), frame_->acceleration()
+                    )
                 ) & mesh_.Sf()
             )
         );
 
-        // The air entering through the inlet patches already moves at
-        // wind - V (set for the step by beginTimeStep): the fictitious
-        // force must not add a flux there, else the zero-gradient pressure
-        // there lets it in twice and a spurious pressure gradient -A
-        // builds up across the box (which the pressure sampling at
-        // x +- delta n would read as a jump of rho A 2 delta)
-        surfaceScalarField::Boundary& bf = faceForce_->boundaryFieldRef();
-        for (const label patchi : inletPatches_)
-        {
-            bf[patchi] = 0;
-        }
+        // The air entering where the frame sets the far field already
+        // moves with the frame: no flux of the fictitious force there
+        // (else a spurious pressure gradient builds up across the box,
+        // which the pressure sampling at x +- delta n would read as a jump
+        // of rho A 2 delta)
+        frame_->zeroFictitiousFlux(faceForce_->boundaryFieldRef());
     }
     return faceForce_();
 }
@@ -993,7 +867,7 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
                 lineDrag_->compute
                 (
                     mesh_.lookupObject<volVectorField>(UName_),
-                    structure_.model(), frameVelocity_, rho_
+                    structure_.model(), frame_->velocity(), rho_
                 );
                 lineDrag_->addNodalForces(nodal);
             }
@@ -1018,8 +892,8 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
     subSteps_ = substeps;
     ++structureSolves_;
 
-    const scalarField target(interfaceNormalVelocities());
-    triangleVelocity_ = interfaceVelocities();
+    const scalarField target(frame_->normalVelocities(structure_));
+    triangleVelocity_ = frame_->velocities(structure_);
     const label nt = target.size();
 
     const scalar scale = max(Uref_, nt ? max(mag(target)) : 0);
@@ -1123,18 +997,16 @@ bool Foam::canopyCoupling::endTimeStep()
         }
     }
     // The frame moves on with the step; the markers with it
-    if (!failed() && followPayload_)
+    const bool frameMoved =
+        !failed()
+     && frame_->moveOn(mesh_.time().deltaTValue(), structure_.time());
+    if (frameMoved)
     {
-        const vector shift = frameVelocity_*mesh_.time().deltaTValue();
-        const scalar shiftTime = frameOriginTime_;
-        frameOrigin_ += shift;
-        frameOriginTime_ = structure_.time();
         placeMarkers();
         const string problem(updateStencils());
         if (!problem.empty())
         {
-            frameOrigin_ -= shift;
-            frameOriginTime_ = shiftTime;
+            frame_->undoMove();
             failure_ =
                 "at t = " + mesh_.time().timeName() + " (frame moved), "
               + problem;
@@ -1144,8 +1016,7 @@ bool Foam::canopyCoupling::endTimeStep()
     if (failed())
     {
         // Back to the last good state (the start of this step)
-        frameVelocity_ = frameVelocityStart_;
-        frameAcceleration_ = Zero;
+        frame_->returnToStepStart();
         returnToStepStart();
         structure_.commit();
         return false;
@@ -1161,9 +1032,9 @@ bool Foam::canopyCoupling::endTimeStep()
         // next step's drag is computed): a restart, which knows only this
         // state, places it the same way
         sectionTimer timer(ibSeconds_);
-        lineDrag_->place(structure_.model(), frameOrigin_);
+        lineDrag_->place(structure_.model(), frame_->origin());
     }
-    if (followPayload_ || lineDrag_.valid())
+    if (frameMoved || lineDrag_.valid())
     {
         // The force from the markers' and the lines' new places
         spreadForce();
@@ -1172,7 +1043,7 @@ bool Foam::canopyCoupling::endTimeStep()
     // The next step starts from the committed structure's interface
     // velocity (not the relaxed iterate), so that a restart, which knows
     // only the structure's state, continues exactly
-    normalVelocity_ = interfaceNormalVelocities();
+    normalVelocity_ = frame_->normalVelocities(structure_);
     writeSeries();
     if (mesh_.time().writeTime())
     {
@@ -1190,7 +1061,7 @@ void Foam::canopyCoupling::writeStructure()
         // (canopy-frame.xdmf beside case.foam)
         output_->write
         (
-            followPayload_ ? &frameOrigin_ : nullptr,
+            frame_->meshFrameOrigin(),
             [this](dictionary& state) { addCouplingState(state); }
         );
     }
