@@ -411,8 +411,6 @@ Foam::canopyCoupling::canopyCoupling
     slip_(0),
     stopIfNotConverged_(true),
     restartFluid_(false),
-    ibForceLoad_(false),
-    tangentialLoad_(false),
     coarseMarkers_(0),
     failure_(),
     runStartTime_(mesh.time().startTime().value()),
@@ -488,20 +486,10 @@ Foam::canopyCoupling::canopyCoupling
      == "rms";
     stopIfNotConverged_ = readSwitch(dict, "stopIfNotConverged", true);
     restartFluid_ = readSwitch(dict, "restartFluid", false);
-    ibForceLoad_ =
-        readChoice
-        (
-            dict, "pressureJump", "coupling.pressureJump", {"sampled", "ibForce"}
-        )
-     == "ibForce";
-    tangentialLoad_ = readSwitch(dict, "tangentialLoad", false);
-    if (tangentialLoad_ && !ibForceLoad_)
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'coupling.tangentialLoad' = true needs"
-            << " 'coupling.pressureJump' = ibForce (the tangential load is"
-            << " the rest of the markers' IB force)" << exit(FatalIOError);
-    }
+    load_ = clothLoad::New
+    (
+        dict, rho_, readSwitch(dict, "tangentialLoad", false)
+    );
     addedMass_.reset(new addedMassStabiliser(dict, structure_));
 
     noSlip_ =
@@ -806,31 +794,23 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
 
     const canopyMarkers& mk = markers_();
 
-    // Pressure jump dp = rho (p- - p+) per marker, then per triangle
+    // The load on the cloth (clothLoad): the pressure jump per marker,
+    // then per triangle, and a tangential force per marker, to the nodes
     scalarField dpMarker;
-    if (ibForceLoad_)
-    {
-        // Newton's third law: the air pushes the canopy with minus the
-        // force the markers put on it; its normal part per area is the jump
-        dpMarker = -rho_*(markerForceTotal_ & mk.normals())/mk.areas();
-    }
-    else
     {
         sectionTimer timer(ibSeconds_);
-        const scalarField pPlus(plusStencil_->interpolate(p));
-        const scalarField pMinus(minusStencil_->interpolate(p));
-        dpMarker = rho_*(pMinus - pPlus);
+        dpMarker = load_->pressureJump
+        (
+            mk, markerForceTotal_, plusStencil_(), minusStencil_(), p
+        );
     }
     pressureForce_ = sum(dpMarker*mk.areas()*mk.normals());
-
-    // The rest of the reaction -rho F_m: its tangential part, to the nodes
     vectorField tangentialNodal;
-    if (tangentialLoad_)
+    if (load_->tangential())
     {
-        const vectorField& n = mk.normals();
         const vectorField tangential
         (
-            -rho_*(markerForceTotal_ - (markerForceTotal_ & n)*n)
+            load_->tangentialForces(mk, markerForceTotal_)
         );
         pressureForce_ += sum(tangential);
         tangentialNodal = mk.toNodes(tangential);
@@ -849,14 +829,14 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
         sectionTimer timer(structureSeconds_);
         structure_.restore();
         structure_.setPressureJump(mk.triangleAverage(dpMarker));
-        if (addedMass_->active() || lineDrag_.valid() || tangentialLoad_)
+        if (addedMass_->active() || lineDrag_.valid() || load_->tangential())
         {
             vectorField nodal(structure_.nNodes(), Zero);
             if (addedMass_->active())
             {
                 nodal = addedMass_->balancingForces();
             }
-            if (tangentialLoad_)
+            if (load_->tangential())
             {
                 nodal += tangentialNodal;
             }
@@ -965,7 +945,7 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
         << ", slip " << slip_
         << ", " << acceleration_->describe().c_str()
         << ", structure sub-steps " << substeps
-        << (tangentialLoad_ ? ", load on the cloth " : ", pressure force ")
+        << (load_->tangential() ? ", load on the cloth " : ", pressure force ")
         << pressureForce_
         << ", IB force " << rho_*markerForce_;
     if (lineDrag_.valid())
