@@ -9,8 +9,6 @@
 #include "readChoice.H"
 #include "readEntry.H"
 #include "addedMassStabiliser.H"
-#include "treeDataCell.H"
-#include "indexedOctree.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -111,119 +109,7 @@ void unpackVectors
 Foam::string Foam::canopyCoupling::updateStencils()
 {
     sectionTimer timer(ibSeconds_);
-    const canopyMarkers& mk = markers_();
-    velocityStencil_->update(mk.points());
-
-    // Pressure sampling points x -/+ delta n, delta in local cells along n
-    const vectorField& h = velocityStencil_->spacing();
-    const vectorField& n = mk.normals();
-    scalarField delta(mk.size());
-    forAll(delta, m)
-    {
-        const vector nn = cmptMag(n[m]);
-        delta[m] = pressureOffset_*(nn & h[m]);
-    }
-    plusStencil_->update(mk.points() + delta*n, n, mk.points(), 1);
-    minusStencil_->update(mk.points() - delta*n, n, mk.points(), -1);
-    reportCoarseMarkers(h);
-
-    // Every marker must have a stencil: a canopy leaving the mesh stops here
-    const boolList* flags[3] =
-    {
-        &velocityStencil_->valid(),
-        &plusStencil_->valid(),
-        &minusStencil_->valid()
-    };
-    const char* names[3] = {"velocity", "pressure (+ side)", "pressure (- side)"};
-    for (int s = 0; s < 3; ++s)
-    {
-        forAll(*flags[s], m)
-        {
-            if (!(*flags[s])[m])
-            {
-                OStringStream os;
-                os  << "marker " << m << " at " << mk.points()[m]
-                    << " has no " << names[s] << " stencil: the canopy is"
-                    << " leaving the mesh (or the mesh is too coarse near it)";
-                return os.str();
-            }
-        }
-    }
-    return string();
-}
-
-
-void Foam::canopyCoupling::reportCoarseMarkers(const vectorField& h)
-{
-    // A marker in a cell more than 1.5 times the finest marker's cell lies
-    // past the finest refinement level around the canopy (a nested mesh,
-    // bin/canopy-mesh); said when the count changes (the same on every
-    // rank: h is)
-    scalar finest = GREAT;
-    forAll(h, m)
-    {
-        if (cmptMax(h[m]) > 0)
-        {
-            finest = min(finest, cmptMax(h[m]));
-        }
-    }
-    label coarse = 0;
-    forAll(h, m)
-    {
-        coarse += (cmptMax(h[m]) > 1.5*finest);
-    }
-    if (coarse != coarseMarkers_)
-    {
-        Info<< "canopyCoupling: t = " << mesh_.time().timeName() << ": "
-            << coarse << " of " << h.size() << " markers lie in cells"
-            << " coarser than the finest at the canopy (" << finest
-            << " m)" << (coarse ? ": the canopy reaches past the finest"
-               " refinement level" : "") << endl;
-        coarseMarkers_ = coarse;
-    }
-}
-
-
-Foam::tmp<Foam::scalarField> Foam::canopyCoupling::markerVolumes() const
-{
-    const vectorField& h = velocityStencil_->spacing();
-    tmp<scalarField> tdV(new scalarField(markers_->areas()));
-    scalarField& dV = tdV.ref();
-    forAll(dV, m)
-    {
-        dV[m] *= Foam::cbrt(h[m].x()*h[m].y()*h[m].z());
-    }
-    return tdV;
-}
-
-
-Foam::tmp<Foam::scalarField> Foam::canopyCoupling::localCellSizes
-(
-    const pointField& points,
-    const scalar deflt
-) const
-{
-    tmp<scalarField> tsize(new scalarField(points.size(), GREAT));
-    scalarField& size = tsize.ref();
-    const indexedOctree<treeDataCell>& tree = mesh_.cellTree();
-    forAll(points, i)
-    {
-        const label celli = tree.findInside(points[i]);
-        if (celli >= 0)
-        {
-            size[i] = Foam::cbrt(mesh_.V()[celli]);
-        }
-    }
-    Pstream::listCombineGather(size, minEqOp<scalar>());
-    Pstream::listCombineScatter(size);
-    forAll(size, i)
-    {
-        if (size[i] >= GREAT)
-        {
-            size[i] = deflt;
-        }
-    }
-    return tsize;
+    return ib_->updateStencils();
 }
 
 
@@ -231,7 +117,7 @@ void Foam::canopyCoupling::spreadForce()
 {
     sectionTimer timer(ibSeconds_);
     vectorField f(mesh_.nCells(), Zero);
-    velocityStencil_->spread(markerForceTotal_, f);
+    ib_->spread(f);
     if (lineDrag_.valid())
     {
         lineDrag_->spreadReaction(f, rho_);
@@ -244,16 +130,7 @@ void Foam::canopyCoupling::spreadForce()
 
 void Foam::canopyCoupling::readCouplingState(const IOdictionary& state)
 {
-    const vectorField F(state.get<vectorField>("markerForce"));
-    if (F.size() != markerForceTotal_.size())
-    {
-        FatalIOErrorInFunction(state)
-            << "Entry 'markerForce' holds " << F.size() << " marker forces,"
-            << " but the canopy has " << markerForceTotal_.size()
-            << " markers (were the canopy or coupling.markerSpacing changed"
-            << " since it was written?)" << exit(FatalIOError);
-    }
-    markerForceTotal_ = F;
+    ib_->readState(state);
     if (lineDrag_.valid())
     {
         const vectorField L
@@ -296,8 +173,7 @@ void Foam::canopyCoupling::readCouplingState(const IOdictionary& state)
 
 void Foam::canopyCoupling::addCouplingState(dictionary& state) const
 {
-    state.add("markerForce", markerForceTotal_);
-    state.add("markerLevels", markers_->levels());
+    ib_->writeState(state);
     frame_->writeState(state);
     if (lineDrag_.valid())
     {
@@ -334,7 +210,7 @@ void Foam::canopyCoupling::placeMarkers()
 {
     // A trial structure state at t + dt is seen from the frame's origin at
     // t + dt (canopyFrame::originAt)
-    markers_->update(structure_.model(), frame_->originAt(structure_.time()));
+    ib_->place(structure_.model(), frame_->originAt(structure_.time()));
 }
 
 
@@ -347,7 +223,7 @@ void Foam::canopyCoupling::returnToStepStart()
     structure_.restore();
     placeMarkers();
     updateStencils();
-    markerForceTotal_ = markerForceStart_;
+    ib_->returnToStepStart();
     spreadForce();
 }
 
@@ -377,17 +253,12 @@ Foam::canopyCoupling::canopyCoupling
     structure_(mesh.time()),
     scheme_(scheme::strong),
     rho_(1.2),
-    forcingIterations_(2),
-    noSlip_(true),
-    pressureOffset_(3),
     tolerance_(1e-3),
     Uref_(1),
     rmsResidual_(false),
     acceleration_(),
     lineDrag_(),
     UName_("U"),
-    markerForceTotal_(),
-    markerForceStart_(),
     force_
     (
         IOobject
@@ -406,12 +277,10 @@ Foam::canopyCoupling::canopyCoupling
     residual_(0),
     converged_(false),
     subSteps_(0),
-    markerForce_(Zero),
     pressureForce_(Zero),
     slip_(0),
     stopIfNotConverged_(true),
     restartFluid_(false),
-    coarseMarkers_(0),
     failure_(),
     runStartTime_(mesh.time().startTime().value()),
     structureSeconds_(0),
@@ -473,12 +342,6 @@ Foam::canopyCoupling::canopyCoupling
     }
 
     rho_ = canopyEntry::number(dict, "rho", "coupling.rho", 1.2);
-    forcingIterations_ = canopyEntry::integer
-    (
-        dict, "forcingIterations", "coupling.forcingIterations", 2
-    );
-    pressureOffset_ =
-        canopyEntry::number(dict, "pressureOffset", "coupling.pressureOffset", 3);
     tolerance_ = canopyEntry::number(dict, "tolerance", "coupling.tolerance", 1e-3);
     Uref_ = canopyEntry::number(dict, "Uref", "coupling.Uref", 1);
     rmsResidual_ =
@@ -492,14 +355,9 @@ Foam::canopyCoupling::canopyCoupling
     );
     addedMass_.reset(new addedMassStabiliser(dict, structure_));
 
-    noSlip_ =
-        readChoice(dict, "tangential", "coupling.tangential", {"noSlip", "free"})
-     == "noSlip";
-
     const struct { const char* name; scalar value; scalar lo; } positive[] =
     {
         {"rho", rho_, 0},
-        {"pressureOffset", pressureOffset_, 0},
         {"tolerance", tolerance_, 0},
         {"Uref", Uref_, 0},
     };
@@ -512,35 +370,8 @@ Foam::canopyCoupling::canopyCoupling
                 << " must be > 0" << exit(FatalIOError);
         }
     }
-    if (forcingIterations_ < 1)
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'coupling.forcingIterations' = " << forcingIterations_
-            << " must be >= 1" << exit(FatalIOError);
-    }
     acceleration_ = interfaceAcceleration::New(dict);
     frame_ = canopyFrame::New(dict, mesh, structure_);
-
-    const word kernelName
-    (
-        canopyEntry::wordValue(dict, "kernel", "coupling.kernel", "roma3")
-    );
-    kernel_ = deltaKernel::New(kernelName);
-
-    // Marker spacing: coupling.markerSpacing, else the local cell size
-    // (the smallest cell's where a triangle is in no cell)
-    const bool uniformSpacing = dict.found("markerSpacing");
-    const scalar spacing = canopyEntry::number
-    (
-        dict, "markerSpacing", "coupling.markerSpacing",
-        Foam::cbrt(gMin(mesh.V().field()))
-    );
-    if (!(spacing > 0))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'coupling.markerSpacing' = " << spacing
-            << " must be > 0" << exit(FatalIOError);
-    }
 
     // A restart continues from the structure's state at the start time
     // (canopyStructure::startsFrom decides; the constructor has read an
@@ -565,29 +396,19 @@ Foam::canopyCoupling::canopyCoupling
     output_.reset(new couplingOutput(mesh, structure_, rho_));
     const autoPtr<IOdictionary> state(output_->readState());
 
-    // The triangles' subdivision: a restart's own (so that its markers
-    // match the forces it carries), else from the spacing
-    labelList levels
+    // The markers on the canopy, their stencils and forces: with a
+    // restart's subdivision levels (so that its markers match the forces
+    // it carries)
+    ib_.reset
     (
-        state.valid()
-      ? state->getOrDefault<labelList>("markerLevels", labelList())
-      : labelList()
-    );
-    const label nTriangles = structure_.nTriangles();
-    if (levels.size() != nTriangles)
-    {
-        const scalarField triangleSpacing
+        new ibForcing
         (
-            uniformSpacing
-          ? scalarField(nTriangles, spacing)
-          : localCellSizes(structure_.triangleCentres(), spacing)()
-        );
-        levels = canopyMarkers::levels(structure_.model(), triangleSpacing);
-    }
-    markers_.reset(new canopyMarkers(structure_.model(), levels));
-    velocityStencil_.reset(new ibStencil(mesh, kernel_()));
-    plusStencil_.reset(new ibStencil(mesh, kernel_()));
-    minusStencil_.reset(new ibStencil(mesh, kernel_()));
+            dict, mesh, structure_,
+            state.valid()
+          ? state->getOrDefault<labelList>("markerLevels", labelList())
+          : labelList()
+        )
+    );
     UName_ = canopyEntry::wordValue(dict, "U", "coupling.U", "U");
     if (dict.found("lineDrag"))
     {
@@ -603,15 +424,14 @@ Foam::canopyCoupling::canopyCoupling
         (
             new lineDrag
             (
-                dict.subDict("lineDrag"), mesh, kernel_(),
-                structure_.model(), spacing
+                dict.subDict("lineDrag"), mesh, ib_->kernel(),
+                structure_.model(), ib_->spacing()
             )
         );
     }
 
     // The IB force is carried by the markers; a restart reads it and the
     // frame
-    markerForceTotal_.setSize(markers_->size(), Zero);
     if (runTime.value() != 0)
     {
         if (state.valid())
@@ -634,7 +454,6 @@ Foam::canopyCoupling::canopyCoupling
     }
 
     // Interface velocity from the structure's initial state
-    const label nt = structure_.nTriangles();
     normalVelocity_ = frame_->normalVelocities(structure_);
     triangleVelocity_ = frame_->velocities(structure_);
     const string problem(updateStencils());
@@ -652,13 +471,8 @@ Foam::canopyCoupling::canopyCoupling
         << output_->nominalDiameter()
         << " m" << nl;
     Info<< "canopyCoupling: "
-        << (scheme_ == scheme::strong ? "strong" : "explicit") << " coupling, "
-        << markers_->size() << " markers on " << nt << " canopy triangles"
-        << " (spacing " << (uniformSpacing ? "" : "local cell size, min ")
-        << spacing << " m), kernel "
-        << kernelName
-        << ", " << forcingIterations_ << " forcing iterations, "
-        << (noSlip_ ? "noSlip" : "free");
+        << (scheme_ == scheme::strong ? "strong" : "explicit") << " coupling, ";
+    ib_->writeInfo(Info);
     if (lineDrag_.valid())
     {
         Info<< ", line drag at " << lineDrag_->size() << " points ("
@@ -691,7 +505,7 @@ void Foam::canopyCoupling::beginTimeStep()
     structure_.checkpoint();
     frame_->startAt(structure_.time());
     addedMass_->beginStep(structure_);
-    markerForceStart_ = markerForceTotal_;
+    ib_->beginStep();
     acceleration_->reset();
     iteration_ = 0;
     structureSolves_ = 0;
@@ -702,54 +516,13 @@ void Foam::canopyCoupling::beginTimeStep()
 
 void Foam::canopyCoupling::forcingIncrement(const volVectorField& U)
 {
-    const scalar dt = mesh_.time().deltaTValue();
     sectionTimer timer(ibSeconds_);
-    const canopyMarkers& mk = markers_();
-    const scalarField dV(markerVolumes());
-    const vectorField& n = mk.normals();
-    const scalarField vn(mk.toMarkers(normalVelocity_));
-    const vectorField vt(mk.toMarkers(triangleVelocity_));
-
-    // The iterations work on the markers' velocities alone: spreading F
-    // and advancing dt changes them by dt I S F (I interpolation, S
-    // spreading), which the stencils give without touching the whole mesh
-    vectorField Um(velocityStencil_->interpolate(U));
-    vectorField markerForce(mk.size(), Zero);
-    scalar slip = 0;
-
-    for (label k = 0; k < forcingIterations_; ++k)
-    {
-        vectorField F(mk.size());
-        forAll(F, m)
-        {
-            // Target: the normal velocity of the interface (canopy motion
-            // + porous seepage); tangentially the canopy's own velocity
-            // (no slip) or the fluid's (free slip).
-            const vector tangent =
-                noSlip_ ? (vt[m] - (vt[m] & n[m])*n[m])
-                        : (Um[m] - (Um[m] & n[m])*n[m]);
-            const vector target = tangent + vn[m]*n[m];
-            F[m] = (target - Um[m])*dV[m]/dt;
-            if (k == 0)
-            {
-                slip = max(slip, mag((Um[m] & n[m]) - vn[m]));
-            }
-        }
-        markerForce += F;
-        if (k + 1 < forcingIterations_)
-        {
-            List<vector> dUm;
-            velocityStencil_->interpolateSpread(F, dUm);
-            Um += dt*dUm;
-        }
-    }
-
-    markerForceTotal_ += markerForce;
-    velocityStencil_->spread(markerForce, force_.primitiveFieldRef());
+    slip_ = ib_->forcingIncrement
+    (
+        U, normalVelocity_, triangleVelocity_, Uref_, force_
+    );
     force_.correctBoundaryConditions();
     faceForce_.clear();
-    markerForce_ = sum(markerForceTotal_);
-    slip_ = slip/max(Uref_, vn.size() ? max(mag(vn)) : 0);
 }
 
 
@@ -792,7 +565,7 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
         return false;
     }
 
-    const canopyMarkers& mk = markers_();
+    const canopyMarkers& mk = ib_->markers();
 
     // The load on the cloth (clothLoad): the pressure jump per marker,
     // then per triangle, and a tangential force per marker, to the nodes
@@ -801,7 +574,8 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
         sectionTimer timer(ibSeconds_);
         dpMarker = load_->pressureJump
         (
-            mk, markerForceTotal_, plusStencil_(), minusStencil_(), p
+            mk, ib_->markerForces(), ib_->plusStencil(), ib_->minusStencil(),
+            p
         );
     }
     pressureForce_ = sum(dpMarker*mk.areas()*mk.normals());
@@ -810,7 +584,7 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
     {
         const vectorField tangential
         (
-            load_->tangentialForces(mk, markerForceTotal_)
+            load_->tangentialForces(mk, ib_->markerForces())
         );
         pressureForce_ += sum(tangential);
         tangentialNodal = mk.toNodes(tangential);
@@ -930,7 +704,7 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
     // markers' forces move with them
     if (scheme_ == scheme::strong && !stop)
     {
-        markerForceTotal_ = markerForceStart_;
+        ib_->returnToStepStart();
     }
     spreadForce();
 
@@ -947,7 +721,7 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
         << ", structure sub-steps " << substeps
         << (load_->tangential() ? ", load on the cloth " : ", pressure force ")
         << pressureForce_
-        << ", IB force " << rho_*markerForce_;
+        << ", IB force " << rho_*ib_->totalForce();
     if (lineDrag_.valid())
     {
         Info<< ", line drag " << lineDrag_->total();
