@@ -64,6 +64,8 @@ Description
 #include "canopyPimpleControl.H"
 #include "fvOptions.H"
 #include "canopyCoupling.H"
+#include "cachedReconstruct.H"
+#include "pressureFaceGradient.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -86,6 +88,7 @@ int main(int argc, char *argv[])
     #include "createTimeControls.H"
     #include "initContinuityErrs.H"
     #include "createFields.H"
+    #include "createFaceNumerics.H"
     #include "CourantNo.H"
     #include "setInitialDeltaT.H"
 

@@ -4,17 +4,11 @@
 \*---------------------------------------------------------------------------*/
 
 #include "canopyCoupling.H"
-#include "extrapolatedCalculatedFvPatchFields.H"
 #include "surfaceInterpolate.H"
-#include "canopy.h"
 #include "switchToken.H"
 #include "readChoice.H"
 #include "readEntry.H"
 #include "addedMassStabiliser.H"
-#include "treeDataCell.H"
-#include "indexedOctree.H"
-#include "pressureFaceGradient.H"
-#include "inletOutletFvPatchFields.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -115,149 +109,7 @@ void unpackVectors
 Foam::string Foam::canopyCoupling::updateStencils()
 {
     sectionTimer timer(ibSeconds_);
-    const canopyMarkers& mk = markers_();
-    velocityStencil_->update(mk.points());
-
-    // Pressure sampling points x -/+ delta n, delta in local cells along n
-    const vectorField& h = velocityStencil_->spacing();
-    const vectorField& n = mk.normals();
-    scalarField delta(mk.size());
-    forAll(delta, m)
-    {
-        const vector nn = cmptMag(n[m]);
-        delta[m] = pressureOffset_*(nn & h[m]);
-    }
-    plusStencil_->update(mk.points() + delta*n, n, mk.points(), 1);
-    minusStencil_->update(mk.points() - delta*n, n, mk.points(), -1);
-    reportCoarseMarkers(h);
-
-    // Every marker must have a stencil: a canopy leaving the mesh stops here
-    const boolList* flags[3] =
-    {
-        &velocityStencil_->valid(),
-        &plusStencil_->valid(),
-        &minusStencil_->valid()
-    };
-    const char* names[3] = {"velocity", "pressure (+ side)", "pressure (- side)"};
-    for (int s = 0; s < 3; ++s)
-    {
-        forAll(*flags[s], m)
-        {
-            if (!(*flags[s])[m])
-            {
-                OStringStream os;
-                os  << "marker " << m << " at " << mk.points()[m]
-                    << " has no " << names[s] << " stencil: the canopy is"
-                    << " leaving the mesh (or the mesh is too coarse near it)";
-                return os.str();
-            }
-        }
-    }
-    return string();
-}
-
-
-void Foam::canopyCoupling::reportCoarseMarkers(const vectorField& h)
-{
-    // A marker in a cell more than 1.5 times the finest marker's cell lies
-    // past the finest refinement level around the canopy (a nested mesh,
-    // bin/canopy-mesh); said when the count changes (the same on every
-    // rank: h is)
-    scalar finest = GREAT;
-    forAll(h, m)
-    {
-        if (cmptMax(h[m]) > 0)
-        {
-            finest = min(finest, cmptMax(h[m]));
-        }
-    }
-    label coarse = 0;
-    forAll(h, m)
-    {
-        coarse += (cmptMax(h[m]) > 1.5*finest);
-    }
-    if (coarse != coarseMarkers_)
-    {
-        Info<< "canopyCoupling: t = " << mesh_.time().timeName() << ": "
-            << coarse << " of " << h.size() << " markers lie in cells"
-            << " coarser than the finest at the canopy (" << finest
-            << " m)" << (coarse ? ": the canopy reaches past the finest"
-               " refinement level" : "") << endl;
-        coarseMarkers_ = coarse;
-    }
-}
-
-
-Foam::tmp<Foam::scalarField> Foam::canopyCoupling::markerVolumes() const
-{
-    const vectorField& h = velocityStencil_->spacing();
-    tmp<scalarField> tdV(new scalarField(markers_->areas()));
-    scalarField& dV = tdV.ref();
-    forAll(dV, m)
-    {
-        dV[m] *= Foam::cbrt(h[m].x()*h[m].y()*h[m].z());
-    }
-    return tdV;
-}
-
-
-Foam::tmp<Foam::scalarField> Foam::canopyCoupling::localCellSizes
-(
-    const pointField& points,
-    const scalar deflt
-) const
-{
-    tmp<scalarField> tsize(new scalarField(points.size(), GREAT));
-    scalarField& size = tsize.ref();
-    const indexedOctree<treeDataCell>& tree = mesh_.cellTree();
-    forAll(points, i)
-    {
-        const label celli = tree.findInside(points[i]);
-        if (celli >= 0)
-        {
-            size[i] = Foam::cbrt(mesh_.V()[celli]);
-        }
-    }
-    Pstream::listCombineGather(size, minEqOp<scalar>());
-    Pstream::listCombineScatter(size);
-    forAll(size, i)
-    {
-        if (size[i] >= GREAT)
-        {
-            size[i] = deflt;
-        }
-    }
-    return tsize;
-}
-
-
-Foam::IOobject Foam::canopyCoupling::couplingStateIO
-(
-    const IOobject::readOption r
-) const
-{
-    return IOobject
-    (
-        "canopyCoupling",
-        mesh_.time().timeName(),
-        "uniform",
-        mesh_,
-        r,
-        IOobject::NO_WRITE,
-        false
-    );
-}
-
-
-Foam::labelList Foam::canopyCoupling::readMarkerLevels() const
-{
-    IOobject io(couplingStateIO(IOobject::MUST_READ));
-    if (mesh_.time().value() == 0 || !io.typeHeaderOk<IOdictionary>(true))
-    {
-        return labelList();
-    }
-    const IOdictionary state(io);
-    return state.getOrDefault<labelList>("markerLevels", labelList());
+    return ib_->updateStencils();
 }
 
 
@@ -265,7 +117,7 @@ void Foam::canopyCoupling::spreadForce()
 {
     sectionTimer timer(ibSeconds_);
     vectorField f(mesh_.nCells(), Zero);
-    velocityStencil_->spread(markerForceTotal_, f);
+    ib_->spread(f);
     if (lineDrag_.valid())
     {
         lineDrag_->spreadReaction(f, rho_);
@@ -276,27 +128,9 @@ void Foam::canopyCoupling::spreadForce()
 }
 
 
-void Foam::canopyCoupling::readCouplingState()
+void Foam::canopyCoupling::readCouplingState(const IOdictionary& state)
 {
-    IOobject io(couplingStateIO(IOobject::MUST_READ));
-    if (!io.typeHeaderOk<IOdictionary>(true))
-    {
-        WarningInFunction
-            << "No " << io.objectPath() << ": the immersed-boundary force"
-            << " restarts from zero and the frame from the payload" << endl;
-        return;
-    }
-    const IOdictionary state(io);
-    const vectorField F(state.get<vectorField>("markerForce"));
-    if (F.size() != markerForceTotal_.size())
-    {
-        FatalIOErrorInFunction(state)
-            << "Entry 'markerForce' holds " << F.size() << " marker forces,"
-            << " but the canopy has " << markerForceTotal_.size()
-            << " markers (were the canopy or coupling.markerSpacing changed"
-            << " since it was written?)" << exit(FatalIOError);
-    }
-    markerForceTotal_ = F;
+    ib_->readState(state);
     if (lineDrag_.valid())
     {
         const vectorField L
@@ -313,11 +147,7 @@ void Foam::canopyCoupling::readCouplingState()
         }
         lineDrag_->setForces(L);
     }
-    if (followPayload_)
-    {
-        frameOrigin_ = state.get<vector>("frameOrigin");
-        frameVelocity_ = state.get<vector>("frameVelocity");
-    }
+    frame_->readState(state);
     if (addedMass_->active())
     {
         if (state.found("addedMassBalance"))
@@ -331,7 +161,7 @@ void Foam::canopyCoupling::readCouplingState()
         else
         {
             WarningInFunction
-                << "No entry 'addedMassBalance' in " << io.objectPath()
+                << "No entry 'addedMassBalance' in " << state.objectPath()
                 << ": the added-mass stabiliser's first balance after the"
                 << " restart is zero" << endl;
         }
@@ -341,17 +171,10 @@ void Foam::canopyCoupling::readCouplingState()
 }
 
 
-void Foam::canopyCoupling::writeCouplingState() const
+void Foam::canopyCoupling::addCouplingState(dictionary& state) const
 {
-    // ASCII (a dictionary cannot hold binary fields) with every digit, so
-    // that a restart continues exactly: the precision is set before the
-    // entries are added, because an entry is formatted when it is added
-    const unsigned precision = IOstream::defaultPrecision(17);
-    IOdictionary state(couplingStateIO(IOobject::NO_READ));
-    state.add("markerForce", markerForceTotal_);
-    state.add("markerLevels", markers_->levels());
-    state.add("frameOrigin", frameOrigin_);
-    state.add("frameVelocity", frameVelocity_);
+    ib_->writeState(state);
+    frame_->writeState(state);
     if (lineDrag_.valid())
     {
         state.add("lineDragForce", lineDrag_->forces());
@@ -362,55 +185,6 @@ void Foam::canopyCoupling::writeCouplingState() const
     }
     acceleration_->writeState(state);
     state.add("runStartTime", runStartTime_);
-    state.writeObject
-    (
-        IOstream::ASCII,
-        IOstream::currentVersion,
-        IOstream::UNCOMPRESSED,
-        true
-    );
-    IOstream::defaultPrecision(precision);
-}
-
-
-void Foam::canopyCoupling::readFrame(const dictionary& dict)
-{
-    if (dict.found("frame") && !dict.isDict("frame"))
-    {
-        canopyEntry::fail
-        (
-            dict, "frame", "coupling.frame", "must be a sub-dictionary { type ..; }"
-        );
-    }
-    const dictionary& frame = dict.subOrEmptyDict("frame");
-    followPayload_ =
-        readChoice(frame, "type", "coupling.frame.type", {"fixed", "payload"})
-     == "payload";
-    canopyEntry::reportUnknown
-    (
-        frame, "coupling.frame.", {"type", "inletPatches", "wind"}
-    );
-    wind_ = canopyEntry::vectorValue(frame, "wind", "coupling.frame.wind", Zero);
-    if (!followPayload_)
-    {
-        return;
-    }
-    if (!structure_.hasPayload())
-    {
-        FatalIOErrorInFunction(frame)
-            << "Entry 'coupling.frame.type' = payload, but the structure has"
-            << " no payload" << exit(FatalIOError);
-    }
-    const wordReList names(frame.get<wordReList>("inletPatches"));
-    inletPatches_ = mesh_.boundaryMesh().patchSet(names, false).sortedToc();
-    if (inletPatches_.empty())
-    {
-        FatalIOErrorInFunction(frame)
-            << "Entry 'coupling.frame.inletPatches' = " << names
-            << " matches no patch; patches: " << mesh_.boundaryMesh().names()
-            << exit(FatalIOError);
-    }
-    frameVelocity_ = structure_.payloadVelocity();
 }
 
 
@@ -432,40 +206,11 @@ Foam::scalar Foam::canopyCoupling::residualNorm
 }
 
 
-Foam::tmp<Foam::scalarField>
-Foam::canopyCoupling::interfaceNormalVelocities() const
-{
-    tmp<scalarField> tvn(structure_.normalVelocities());
-    if (followPayload_)
-    {
-        tvn.ref() -= frameVelocity_ & structure_.triangleNormals();
-    }
-    return tvn;
-}
-
-
-Foam::tmp<Foam::vectorField>
-Foam::canopyCoupling::interfaceVelocities() const
-{
-    tmp<vectorField> tv(structure_.triangleVelocities());
-    if (followPayload_)
-    {
-        tv.ref() -= frameVelocity_;
-    }
-    return tv;
-}
-
-
 void Foam::canopyCoupling::placeMarkers()
 {
-    // The frame moves on with V while the structure advances through the
-    // step: a trial structure state at t + dt is seen from the frame's
-    // origin at t + dt, frameOrigin_ + V dt (frameOrigin_ itself moves at
-    // the end of the step)
-    const vector origin =
-        frameOrigin_
-      + frameVelocity_*(structure_.time() - frameOriginTime_);
-    markers_->update(structure_.model(), origin);
+    // A trial structure state at t + dt is seen from the frame's origin at
+    // t + dt (canopyFrame::originAt)
+    ib_->place(structure_.model(), frame_->originAt(structure_.time()));
 }
 
 
@@ -478,76 +223,22 @@ void Foam::canopyCoupling::returnToStepStart()
     structure_.restore();
     placeMarkers();
     updateStencils();
-    markerForceTotal_ = markerForceStart_;
+    ib_->returnToStepStart();
     spreadForce();
 }
 
 
 void Foam::canopyCoupling::writeSeries()
 {
-    if (!Pstream::master())
-    {
-        return;
-    }
-    const Time& runTime = mesh_.time();
-    if (!series_.valid())
-    {
-        const fileName dir
-        (
-            runTime.globalPath()/"postProcessing"/"canopy"
-           /runTime.timeName(runTime.startTime().value())
-        );
-        mkDir(dir);
-        series_.reset(new OFstream(dir/"canopy.dat"));
-        double g[3] = {0, 0, 0};
-        canopy_model_get_gravity(structure_.model(), g);
-        series_()
-            << "# canopyFoam time series of the canopy (ground frame)" << nl
-            << "# nominalDiameter " << nominalDiameter_ << nl
-            << "# totalMass " << structure_.totalMass() << nl
-            << "# rho " << rho_ << nl
-            << "# gravity " << g[0] << ' ' << g[1] << ' ' << g[2] << nl
-            << "# time payload_x payload_y payload_z payload_Ux payload_Uy"
-            << " payload_Uz force_x force_y force_z projected_diameter"
-            << " canopy_area kinetic spring gravity coupling_iterations"
-            << " residual slip substeps frame_x frame_y frame_z"
-            << " line_drag_x line_drag_y line_drag_z"
-            << " canopy_x canopy_y canopy_z" << nl;
-    }
-    const point x
-    (
-        structure_.hasPayload() ? structure_.payloadPosition() : point::zero
-    );
-    const vector v
-    (
-        structure_.hasPayload() ? structure_.payloadVelocity() : vector::zero
-    );
-    const scalar diameter = structure_.projectedDiameter();
-    const scalar area = structure_.canopyArea();
-    const canopyStructure::energy e(structure_.energies());
-    const vector lineDragForce
-    (
-        lineDrag_.valid() ? lineDrag_->total() : vector::zero
-    );
-    // The canopy's area-weighted centre (ground frame): with the payload,
-    // the suspension's direction
-    const scalarField areas(structure_.triangleAreas());
-    const point centre
-    (
-        sum(areas*structure_.triangleCentres())/max(sum(areas), VSMALL)
-    );
-    series_()
-        << runTime.value() << ' ' << x.x() << ' ' << x.y() << ' ' << x.z()
-        << ' ' << v.x() << ' ' << v.y() << ' ' << v.z()
-        << ' ' << pressureForce_.x() << ' ' << pressureForce_.y() << ' '
-        << pressureForce_.z() << ' ' << diameter << ' ' << area
-        << ' ' << e.kinetic << ' ' << e.spring << ' ' << e.gravity
-        << ' ' << iteration_ << ' ' << residual_ << ' ' << slip_
-        << ' ' << subSteps_ << ' ' << frameOrigin_.x() << ' '
-        << frameOrigin_.y() << ' ' << frameOrigin_.z()
-        << ' ' << lineDragForce.x() << ' ' << lineDragForce.y() << ' '
-        << lineDragForce.z() << ' ' << centre.x() << ' ' << centre.y()
-        << ' ' << centre.z() << endl;
+    couplingOutput::stepSummary step;
+    step.load = pressureForce_;
+    step.iterations = iteration_;
+    step.residual = residual_;
+    step.slip = slip_;
+    step.subSteps = subSteps_;
+    step.frameOrigin = frame_->origin();
+    step.lineDrag = lineDrag_.valid() ? lineDrag_->total() : vector::zero;
+    output_->writeSeries(step);
 }
 
 
@@ -562,17 +253,12 @@ Foam::canopyCoupling::canopyCoupling
     structure_(mesh.time()),
     scheme_(scheme::strong),
     rho_(1.2),
-    forcingIterations_(2),
-    noSlip_(true),
-    pressureOffset_(3),
     tolerance_(1e-3),
     Uref_(1),
     rmsResidual_(false),
     acceleration_(),
     lineDrag_(),
     UName_("U"),
-    markerForceTotal_(),
-    markerForceStart_(),
     force_
     (
         IOobject
@@ -591,24 +277,10 @@ Foam::canopyCoupling::canopyCoupling
     residual_(0),
     converged_(false),
     subSteps_(0),
-    markerForce_(Zero),
     pressureForce_(Zero),
     slip_(0),
-    needsNonOrthCorrection_(meshNeedsNonOrthCorrection(mesh)),
     stopIfNotConverged_(true),
     restartFluid_(false),
-    ibForceLoad_(false),
-    tangentialLoad_(false),
-    nominalDiameter_(0),
-    followPayload_(false),
-    wind_(Zero),
-    coarseMarkers_(0),
-    inletPatches_(),
-    frameOrigin_(Zero),
-    frameOriginTime_(0),
-    frameVelocity_(Zero),
-    frameAcceleration_(Zero),
-    frameVelocityStart_(Zero),
     failure_(),
     runStartTime_(mesh.time().startTime().value()),
     structureSeconds_(0),
@@ -670,12 +342,6 @@ Foam::canopyCoupling::canopyCoupling
     }
 
     rho_ = canopyEntry::number(dict, "rho", "coupling.rho", 1.2);
-    forcingIterations_ = canopyEntry::integer
-    (
-        dict, "forcingIterations", "coupling.forcingIterations", 2
-    );
-    pressureOffset_ =
-        canopyEntry::number(dict, "pressureOffset", "coupling.pressureOffset", 3);
     tolerance_ = canopyEntry::number(dict, "tolerance", "coupling.tolerance", 1e-3);
     Uref_ = canopyEntry::number(dict, "Uref", "coupling.Uref", 1);
     rmsResidual_ =
@@ -683,30 +349,15 @@ Foam::canopyCoupling::canopyCoupling
      == "rms";
     stopIfNotConverged_ = readSwitch(dict, "stopIfNotConverged", true);
     restartFluid_ = readSwitch(dict, "restartFluid", false);
-    ibForceLoad_ =
-        readChoice
-        (
-            dict, "pressureJump", "coupling.pressureJump", {"sampled", "ibForce"}
-        )
-     == "ibForce";
-    tangentialLoad_ = readSwitch(dict, "tangentialLoad", false);
-    if (tangentialLoad_ && !ibForceLoad_)
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'coupling.tangentialLoad' = true needs"
-            << " 'coupling.pressureJump' = ibForce (the tangential load is"
-            << " the rest of the markers' IB force)" << exit(FatalIOError);
-    }
+    load_ = clothLoad::New
+    (
+        dict, rho_, readSwitch(dict, "tangentialLoad", false)
+    );
     addedMass_.reset(new addedMassStabiliser(dict, structure_));
-
-    noSlip_ =
-        readChoice(dict, "tangential", "coupling.tangential", {"noSlip", "free"})
-     == "noSlip";
 
     const struct { const char* name; scalar value; scalar lo; } positive[] =
     {
         {"rho", rho_, 0},
-        {"pressureOffset", pressureOffset_, 0},
         {"tolerance", tolerance_, 0},
         {"Uref", Uref_, 0},
     };
@@ -719,35 +370,8 @@ Foam::canopyCoupling::canopyCoupling
                 << " must be > 0" << exit(FatalIOError);
         }
     }
-    if (forcingIterations_ < 1)
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'coupling.forcingIterations' = " << forcingIterations_
-            << " must be >= 1" << exit(FatalIOError);
-    }
     acceleration_ = interfaceAcceleration::New(dict);
-    readFrame(dict);
-
-    const word kernelName
-    (
-        canopyEntry::wordValue(dict, "kernel", "coupling.kernel", "roma3")
-    );
-    kernel_ = deltaKernel::New(kernelName);
-
-    // Marker spacing: coupling.markerSpacing, else the local cell size
-    // (the smallest cell's where a triangle is in no cell)
-    const bool uniformSpacing = dict.found("markerSpacing");
-    const scalar spacing = canopyEntry::number
-    (
-        dict, "markerSpacing", "coupling.markerSpacing",
-        Foam::cbrt(gMin(mesh.V().field()))
-    );
-    if (!(spacing > 0))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'coupling.markerSpacing' = " << spacing
-            << " must be > 0" << exit(FatalIOError);
-    }
+    frame_ = canopyFrame::New(dict, mesh, structure_);
 
     // A restart continues from the structure's state at the start time
     // (canopyStructure::startsFrom decides; the constructor has read an
@@ -768,24 +392,23 @@ Foam::canopyCoupling::canopyCoupling
             << " the canopy starts from its initial shape" << endl;
     }
 
-    // The triangles' subdivision: a restart's own (so that its markers
-    // match the forces it carries), else from the spacing
-    labelList levels(readMarkerLevels());
-    const label nTriangles = structure_.nTriangles();
-    if (levels.size() != nTriangles)
-    {
-        const scalarField triangleSpacing
+    // The files; a restart's coupling state (null when there is none)
+    output_.reset(new couplingOutput(mesh, structure_, rho_));
+    const autoPtr<IOdictionary> state(output_->readState());
+
+    // The markers on the canopy, their stencils and forces: with a
+    // restart's subdivision levels (so that its markers match the forces
+    // it carries)
+    ib_.reset
+    (
+        new ibForcing
         (
-            uniformSpacing
-          ? scalarField(nTriangles, spacing)
-          : localCellSizes(structure_.triangleCentres(), spacing)()
-        );
-        levels = canopyMarkers::levels(structure_.model(), triangleSpacing);
-    }
-    markers_.reset(new canopyMarkers(structure_.model(), levels));
-    velocityStencil_.reset(new ibStencil(mesh, kernel_()));
-    plusStencil_.reset(new ibStencil(mesh, kernel_()));
-    minusStencil_.reset(new ibStencil(mesh, kernel_()));
+            dict, mesh, structure_,
+            state.valid()
+          ? state->getOrDefault<labelList>("markerLevels", labelList())
+          : labelList()
+        )
+    );
     UName_ = canopyEntry::wordValue(dict, "U", "coupling.U", "U");
     if (dict.found("lineDrag"))
     {
@@ -801,31 +424,38 @@ Foam::canopyCoupling::canopyCoupling
         (
             new lineDrag
             (
-                dict.subDict("lineDrag"), mesh, kernel_(),
-                structure_.model(), spacing
+                dict.subDict("lineDrag"), mesh, ib_->kernel(),
+                structure_.model(), ib_->spacing()
             )
         );
     }
 
     // The IB force is carried by the markers; a restart reads it and the
     // frame
-    markerForceTotal_.setSize(markers_->size(), Zero);
     if (runTime.value() != 0)
     {
-        readCouplingState();
+        if (state.valid())
+        {
+            readCouplingState(state());
+        }
+        else
+        {
+            WarningInFunction
+                << "No " << output_->statePath() << ": the immersed-boundary"
+                << " force restarts from zero and the frame from the payload"
+                << endl;
+        }
     }
-    frameVelocityStart_ = frameVelocity_;
-    frameOriginTime_ = structure_.time();
+    frame_->startAt(structure_.time());
     placeMarkers();
     if (lineDrag_.valid())
     {
-        lineDrag_->place(structure_.model(), frameOrigin_);
+        lineDrag_->place(structure_.model(), frame_->origin());
     }
 
     // Interface velocity from the structure's initial state
-    const label nt = structure_.nTriangles();
-    normalVelocity_ = interfaceNormalVelocities();
-    triangleVelocity_ = interfaceVelocities();
+    normalVelocity_ = frame_->normalVelocities(structure_);
+    triangleVelocity_ = frame_->velocities(structure_);
     const string problem(updateStencils());
     if (!problem.empty())
     {
@@ -835,87 +465,34 @@ Foam::canopyCoupling::canopyCoupling
 
     spreadForce();
 
-    // Nominal diameter (canopy.diameter, else that of a disc of the
-    // canopy's area), for drag coefficients in post-processing
-    const scalar area0 = structure_.canopyArea();
-    nominalDiameter_ =
-        structure_.dict().subOrEmptyDict("canopy").getOrDefault<scalar>
-        (
-            "diameter",
-            Foam::sqrt(4*area0/constant::mathematical::pi)
-        );
-
     Info<< "canopyCoupling: structure of " << structure_.nNodes()
         << " nodes, total mass " << structure_.totalMass() << " kg, canopy"
-        << " area " << area0 << " m^2, nominal diameter " << nominalDiameter_
+        << " area " << structure_.canopyArea() << " m^2, nominal diameter "
+        << output_->nominalDiameter()
         << " m" << nl;
     Info<< "canopyCoupling: "
-        << (scheme_ == scheme::strong ? "strong" : "explicit") << " coupling, "
-        << markers_->size() << " markers on " << nt << " canopy triangles"
-        << " (spacing " << (uniformSpacing ? "" : "local cell size, min ")
-        << spacing << " m), kernel "
-        << kernelName
-        << ", " << forcingIterations_ << " forcing iterations, "
-        << (noSlip_ ? "noSlip" : "free");
+        << (scheme_ == scheme::strong ? "strong" : "explicit") << " coupling, ";
+    ib_->writeInfo(Info);
     if (lineDrag_.valid())
     {
         Info<< ", line drag at " << lineDrag_->size() << " points ("
             << lineDrag_->nOutside() << " outside the mesh)";
     }
-    if (followPayload_)
-    {
-        Info<< ", the mesh follows the payload (inlet patches "
-            << inletPatches_ << ", wind " << wind_ << ")";
-    }
+    frame_->writeInfo(Info);
     Info<< nl << endl;
 }
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::canopyCoupling::setFarField
-(
-    fvPatchVectorField& Up,
-    const vector& value
-) const
-{
-    // inletOutlet (a side of the box): the far field where the air enters,
-    // zero gradient where it leaves, so the side does not confine the flow
-    if (isA<inletOutletFvPatchVectorField>(Up))
-    {
-        refCast<inletOutletFvPatchVectorField>(Up).refValue() = value;
-        return;
-    }
-    if (!Up.fixesValue())
-    {
-        FatalErrorInFunction
-            << "Entry 'coupling.frame.inletPatches' names patch "
-            << Up.patch().name() << " of " << Up.internalField().name()
-            << ", whose type " << Up.type() << " cannot take the far"
-            << " field's velocity: use fixedValue (an inlet) or inletOutlet"
-            << " (a side)" << exit(FatalError);
-    }
-    Up == value;
-}
-
-
 void Foam::canopyCoupling::beginTimeStep(volVectorField& U)
 {
-    frameVelocityStart_ = frameVelocity_;
-    if (followPayload_)
+    if (frame_->beginStep(U))
     {
-        // The frame moves at the payload's velocity over this step; its
-        // change is a uniform fictitious force -A on the air (faceForce())
-        const scalar dt = mesh_.time().deltaTValue();
-        frameVelocity_ = structure_.payloadVelocity();
-        frameAcceleration_ = (frameVelocity_ - frameVelocityStart_)/dt;
-        volVectorField::Boundary& Ub = U.boundaryFieldRef();
-        for (const label patchi : inletPatches_)
-        {
-            setFarField(Ub[patchi], wind_ - frameVelocity_);
-        }
-        normalVelocity_ = interfaceNormalVelocities();
-        triangleVelocity_ = interfaceVelocities();
+        // The interface velocities relative to the frame's new velocity;
+        // the fictitious force changed with its acceleration
+        normalVelocity_ = frame_->normalVelocities(structure_);
+        triangleVelocity_ = frame_->velocities(structure_);
         faceForce_.clear();
     }
     beginTimeStep();
@@ -926,9 +503,9 @@ void Foam::canopyCoupling::beginTimeStep()
 {
     failure_.clear();
     structure_.checkpoint();
-    frameOriginTime_ = structure_.time();
+    frame_->startAt(structure_.time());
     addedMass_->beginStep(structure_);
-    markerForceStart_ = markerForceTotal_;
+    ib_->beginStep();
     acceleration_->reset();
     iteration_ = 0;
     structureSolves_ = 0;
@@ -939,54 +516,13 @@ void Foam::canopyCoupling::beginTimeStep()
 
 void Foam::canopyCoupling::forcingIncrement(const volVectorField& U)
 {
-    const scalar dt = mesh_.time().deltaTValue();
     sectionTimer timer(ibSeconds_);
-    const canopyMarkers& mk = markers_();
-    const scalarField dV(markerVolumes());
-    const vectorField& n = mk.normals();
-    const scalarField vn(mk.toMarkers(normalVelocity_));
-    const vectorField vt(mk.toMarkers(triangleVelocity_));
-
-    // The iterations work on the markers' velocities alone: spreading F
-    // and advancing dt changes them by dt I S F (I interpolation, S
-    // spreading), which the stencils give without touching the whole mesh
-    vectorField Um(velocityStencil_->interpolate(U));
-    vectorField markerForce(mk.size(), Zero);
-    scalar slip = 0;
-
-    for (label k = 0; k < forcingIterations_; ++k)
-    {
-        vectorField F(mk.size());
-        forAll(F, m)
-        {
-            // Target: the normal velocity of the interface (canopy motion
-            // + porous seepage); tangentially the canopy's own velocity
-            // (no slip) or the fluid's (free slip).
-            const vector tangent =
-                noSlip_ ? (vt[m] - (vt[m] & n[m])*n[m])
-                        : (Um[m] - (Um[m] & n[m])*n[m]);
-            const vector target = tangent + vn[m]*n[m];
-            F[m] = (target - Um[m])*dV[m]/dt;
-            if (k == 0)
-            {
-                slip = max(slip, mag((Um[m] & n[m]) - vn[m]));
-            }
-        }
-        markerForce += F;
-        if (k + 1 < forcingIterations_)
-        {
-            List<vector> dUm;
-            velocityStencil_->interpolateSpread(F, dUm);
-            Um += dt*dUm;
-        }
-    }
-
-    markerForceTotal_ += markerForce;
-    velocityStencil_->spread(markerForce, force_.primitiveFieldRef());
+    slip_ = ib_->forcingIncrement
+    (
+        U, normalVelocity_, triangleVelocity_, Uref_, force_
+    );
     force_.correctBoundaryConditions();
     faceForce_.clear();
-    markerForce_ = sum(markerForceTotal_);
-    slip_ = slip/max(Uref_, vn.size() ? max(mag(vn)) : 0);
 }
 
 
@@ -1002,105 +538,22 @@ const Foam::surfaceScalarField& Foam::canopyCoupling::faceForce() const
                 "canopyFaceForce",
                 (
                     fvc::interpolate(force_)
-                  - dimensionedVector("A", force_.dimensions(), frameAcceleration_)
+                  - dimensionedVector
+                    (
+                        "A", force_.dimensions(), frame_->acceleration()
+                    )
                 ) & mesh_.Sf()
             )
         );
 
-        // The air entering through the inlet patches already moves at
-        // wind - V (set for the step by beginTimeStep): the fictitious
-        // force must not add a flux there, else the zero-gradient pressure
-        // there lets it in twice and a spurious pressure gradient -A
-        // builds up across the box (which the pressure sampling at
-        // x +- delta n would read as a jump of rho A 2 delta)
-        surfaceScalarField::Boundary& bf = faceForce_->boundaryFieldRef();
-        for (const label patchi : inletPatches_)
-        {
-            bf[patchi] = 0;
-        }
+        // The air entering where the frame sets the far field already
+        // moves with the frame: no flux of the fictitious force there
+        // (else a spurious pressure gradient builds up across the box,
+        // which the pressure sampling at x +- delta n would read as a jump
+        // of rho A 2 delta)
+        frame_->zeroFictitiousFlux(faceForce_->boundaryFieldRef());
     }
     return faceForce_();
-}
-
-
-Foam::tmp<Foam::volVectorField> Foam::canopyCoupling::reconstruct
-(
-    const surfaceScalarField& ssf
-) const
-{
-    if (!reconstructInverse_.valid())
-    {
-        SfHat_.reset
-        (
-            new surfaceVectorField("canopySfHat", mesh_.Sf()/mesh_.magSf())
-        );
-        reconstructInverse_.reset
-        (
-            new volTensorField
-            (
-                "canopyReconstructInverse",
-                inv(fvc::surfaceSum(SfHat_()*mesh_.Sf()))
-            )
-        );
-    }
-    tmp<volVectorField> tfield
-    (
-        new volVectorField
-        (
-            IOobject
-            (
-                "reconstruct(" + ssf.name() + ')',
-                ssf.instance(),
-                mesh_,
-                IOobject::NO_READ,
-                IOobject::NO_WRITE
-            ),
-            mesh_,
-            dimensioned<vector>(ssf.dimensions()/dimArea, Zero),
-            extrapolatedCalculatedFvPatchField<vector>::typeName
-        )
-    );
-
-    // inv(sum_f SfHat Sf) & sum_f SfHat ssf_f, summed face by face into
-    // the cells (fvc::surfaceSum without the face field of the products)
-    vectorField& result = tfield.ref().primitiveFieldRef();
-    const labelUList& own = mesh_.owner();
-    const labelUList& nei = mesh_.neighbour();
-    const vectorField& SfHat = SfHat_().primitiveField();
-    const scalarField& values = ssf.primitiveField();
-    forAll(own, facei)
-    {
-        const vector v(SfHat[facei]*values[facei]);
-        result[own[facei]] += v;
-        result[nei[facei]] += v;
-    }
-    forAll(mesh_.boundary(), patchi)
-    {
-        const labelUList& faceCells = mesh_.boundary()[patchi].faceCells();
-        const vectorField& pSfHat = SfHat_().boundaryField()[patchi];
-        const scalarField& pValues = ssf.boundaryField()[patchi];
-        forAll(faceCells, i)
-        {
-            result[faceCells[i]] += pSfHat[i]*pValues[i];
-        }
-    }
-    const tensorField& inverse = reconstructInverse_().primitiveField();
-    forAll(result, celli)
-    {
-        result[celli] = inverse[celli] & result[celli];
-    }
-
-    tfield.ref().correctBoundaryConditions();
-    return tfield;
-}
-
-
-Foam::tmp<Foam::surfaceScalarField> Foam::canopyCoupling::faceGradient
-(
-    const volScalarField& p
-) const
-{
-    return pressureFaceGradient(p, needsNonOrthCorrection_);
 }
 
 
@@ -1112,33 +565,26 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
         return false;
     }
 
-    const canopyMarkers& mk = markers_();
+    const canopyMarkers& mk = ib_->markers();
 
-    // Pressure jump dp = rho (p- - p+) per marker, then per triangle
+    // The load on the cloth (clothLoad): the pressure jump per marker,
+    // then per triangle, and a tangential force per marker, to the nodes
     scalarField dpMarker;
-    if (ibForceLoad_)
-    {
-        // Newton's third law: the air pushes the canopy with minus the
-        // force the markers put on it; its normal part per area is the jump
-        dpMarker = -rho_*(markerForceTotal_ & mk.normals())/mk.areas();
-    }
-    else
     {
         sectionTimer timer(ibSeconds_);
-        const scalarField pPlus(plusStencil_->interpolate(p));
-        const scalarField pMinus(minusStencil_->interpolate(p));
-        dpMarker = rho_*(pMinus - pPlus);
+        dpMarker = load_->pressureJump
+        (
+            mk, ib_->markerForces(), ib_->plusStencil(), ib_->minusStencil(),
+            p
+        );
     }
     pressureForce_ = sum(dpMarker*mk.areas()*mk.normals());
-
-    // The rest of the reaction -rho F_m: its tangential part, to the nodes
     vectorField tangentialNodal;
-    if (tangentialLoad_)
+    if (load_->tangential())
     {
-        const vectorField& n = mk.normals();
         const vectorField tangential
         (
-            -rho_*(markerForceTotal_ - (markerForceTotal_ & n)*n)
+            load_->tangentialForces(mk, ib_->markerForces())
         );
         pressureForce_ += sum(tangential);
         tangentialNodal = mk.toNodes(tangential);
@@ -1157,14 +603,14 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
         sectionTimer timer(structureSeconds_);
         structure_.restore();
         structure_.setPressureJump(mk.triangleAverage(dpMarker));
-        if (addedMass_->active() || lineDrag_.valid() || tangentialLoad_)
+        if (addedMass_->active() || lineDrag_.valid() || load_->tangential())
         {
             vectorField nodal(structure_.nNodes(), Zero);
             if (addedMass_->active())
             {
                 nodal = addedMass_->balancingForces();
             }
-            if (tangentialLoad_)
+            if (load_->tangential())
             {
                 nodal += tangentialNodal;
             }
@@ -1175,7 +621,7 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
                 lineDrag_->compute
                 (
                     mesh_.lookupObject<volVectorField>(UName_),
-                    structure_.model(), frameVelocity_, rho_
+                    structure_.model(), frame_->velocity(), rho_
                 );
                 lineDrag_->addNodalForces(nodal);
             }
@@ -1200,8 +646,8 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
     subSteps_ = substeps;
     ++structureSolves_;
 
-    const scalarField target(interfaceNormalVelocities());
-    triangleVelocity_ = interfaceVelocities();
+    const scalarField target(frame_->normalVelocities(structure_));
+    triangleVelocity_ = frame_->velocities(structure_);
     const label nt = target.size();
 
     const scalar scale = max(Uref_, nt ? max(mag(target)) : 0);
@@ -1258,7 +704,7 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
     // markers' forces move with them
     if (scheme_ == scheme::strong && !stop)
     {
-        markerForceTotal_ = markerForceStart_;
+        ib_->returnToStepStart();
     }
     spreadForce();
 
@@ -1273,9 +719,9 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
         << ", slip " << slip_
         << ", " << acceleration_->describe().c_str()
         << ", structure sub-steps " << substeps
-        << (tangentialLoad_ ? ", load on the cloth " : ", pressure force ")
+        << (load_->tangential() ? ", load on the cloth " : ", pressure force ")
         << pressureForce_
-        << ", IB force " << rho_*markerForce_;
+        << ", IB force " << rho_*ib_->totalForce();
     if (lineDrag_.valid())
     {
         Info<< ", line drag " << lineDrag_->total();
@@ -1305,18 +751,16 @@ bool Foam::canopyCoupling::endTimeStep()
         }
     }
     // The frame moves on with the step; the markers with it
-    if (!failed() && followPayload_)
+    const bool frameMoved =
+        !failed()
+     && frame_->moveOn(mesh_.time().deltaTValue(), structure_.time());
+    if (frameMoved)
     {
-        const vector shift = frameVelocity_*mesh_.time().deltaTValue();
-        const scalar shiftTime = frameOriginTime_;
-        frameOrigin_ += shift;
-        frameOriginTime_ = structure_.time();
         placeMarkers();
         const string problem(updateStencils());
         if (!problem.empty())
         {
-            frameOrigin_ -= shift;
-            frameOriginTime_ = shiftTime;
+            frame_->undoMove();
             failure_ =
                 "at t = " + mesh_.time().timeName() + " (frame moved), "
               + problem;
@@ -1326,8 +770,7 @@ bool Foam::canopyCoupling::endTimeStep()
     if (failed())
     {
         // Back to the last good state (the start of this step)
-        frameVelocity_ = frameVelocityStart_;
-        frameAcceleration_ = Zero;
+        frame_->returnToStepStart();
         returnToStepStart();
         structure_.commit();
         return false;
@@ -1343,9 +786,9 @@ bool Foam::canopyCoupling::endTimeStep()
         // next step's drag is computed): a restart, which knows only this
         // state, places it the same way
         sectionTimer timer(ibSeconds_);
-        lineDrag_->place(structure_.model(), frameOrigin_);
+        lineDrag_->place(structure_.model(), frame_->origin());
     }
-    if (followPayload_ || lineDrag_.valid())
+    if (frameMoved || lineDrag_.valid())
     {
         // The force from the markers' and the lines' new places
         spreadForce();
@@ -1354,7 +797,7 @@ bool Foam::canopyCoupling::endTimeStep()
     // The next step starts from the committed structure's interface
     // velocity (not the relaxed iterate), so that a restart, which knows
     // only the structure's state, continues exactly
-    normalVelocity_ = interfaceNormalVelocities();
+    normalVelocity_ = frame_->normalVelocities(structure_);
     writeSeries();
     if (mesh_.time().writeTime())
     {
@@ -1370,8 +813,11 @@ void Foam::canopyCoupling::writeStructure()
         sectionTimer timer(structureSeconds_);
         // with a mesh that follows the payload, also in the mesh's frame
         // (canopy-frame.xdmf beside case.foam)
-        structure_.write(mesh_.time(), followPayload_ ? &frameOrigin_ : nullptr);
-        writeCouplingState();
+        output_->write
+        (
+            frame_->meshFrameOrigin(),
+            [this](dictionary& state) { addCouplingState(state); }
+        );
     }
     Info<< "canopyCoupling: wall time since the run started: structure "
         << structureSeconds_ << " s, immersed boundary " << ibSeconds_

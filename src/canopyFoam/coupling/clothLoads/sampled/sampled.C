@@ -1,0 +1,59 @@
+/*---------------------------------------------------------------------------*\
+    canopyFoam: sampled.C — the pressure jump sampled on each side of the
+    markers.
+\*---------------------------------------------------------------------------*/
+
+#include "sampled.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace clothLoads
+{
+    defineTypeNameAndDebug(sampled, 0);
+    addToRunTimeSelectionTable(clothLoad, sampled, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::clothLoads::sampled::sampled
+(
+    const dictionary& coupling,
+    const scalar rho,
+    const bool tangential
+)
+:
+    clothLoad(rho)
+{
+    if (tangential)
+    {
+        FatalIOErrorInFunction(coupling)
+            << "Entry 'coupling.tangentialLoad' = true needs"
+            << " 'coupling.pressureJump' = ibForce (the tangential load is"
+            << " the rest of the markers' IB force)" << exit(FatalIOError);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::tmp<Foam::scalarField> Foam::clothLoads::sampled::pressureJump
+(
+    const canopyMarkers& markers,
+    const vectorField& markerForce,
+    const ibStencil& plus,
+    const ibStencil& minus,
+    const volScalarField& p
+) const
+{
+    const scalarField pPlus(plus.interpolate(p));
+    const scalarField pMinus(minus.interpolate(p));
+    return rho_*(pMinus - pPlus);
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,170 @@
+/*---------------------------------------------------------------------------*\
+    canopyFoam: couplingOutput.C — the canopy's time series, the structure's
+    output steps and the coupling's restart state.
+\*---------------------------------------------------------------------------*/
+
+#include "couplingOutput.H"
+#include "canopy.h"
+#include "mathematicalConstants.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::IOobject Foam::couplingOutput::stateIO
+(
+    const IOobject::readOption r
+) const
+{
+    return IOobject
+    (
+        "canopyCoupling",
+        mesh_.time().timeName(),
+        "uniform",
+        mesh_,
+        r,
+        IOobject::NO_WRITE,
+        false
+    );
+}
+
+
+void Foam::couplingOutput::openSeries()
+{
+    const Time& runTime = mesh_.time();
+    const fileName dir
+    (
+        runTime.globalPath()/"postProcessing"/"canopy"
+       /runTime.timeName(runTime.startTime().value())
+    );
+    mkDir(dir);
+    series_.reset(new OFstream(dir/"canopy.dat"));
+    double g[3] = {0, 0, 0};
+    canopy_model_get_gravity(structure_.model(), g);
+    series_()
+        << "# canopyFoam time series of the canopy (ground frame)" << nl
+        << "# nominalDiameter " << nominalDiameter_ << nl
+        << "# totalMass " << structure_.totalMass() << nl
+        << "# rho " << rho_ << nl
+        << "# gravity " << g[0] << ' ' << g[1] << ' ' << g[2] << nl
+        << "# time payload_x payload_y payload_z payload_Ux payload_Uy"
+        << " payload_Uz force_x force_y force_z projected_diameter"
+        << " canopy_area kinetic spring gravity coupling_iterations"
+        << " residual slip substeps frame_x frame_y frame_z"
+        << " line_drag_x line_drag_y line_drag_z"
+        << " canopy_x canopy_y canopy_z" << nl;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::couplingOutput::couplingOutput
+(
+    const fvMesh& mesh,
+    canopyStructure& structure,
+    const scalar rho
+)
+:
+    mesh_(mesh),
+    structure_(structure),
+    rho_(rho),
+    nominalDiameter_
+    (
+        structure.dict().subOrEmptyDict("canopy").getOrDefault<scalar>
+        (
+            "diameter",
+            Foam::sqrt(4*structure.canopyArea()/constant::mathematical::pi)
+        )
+    )
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::fileName Foam::couplingOutput::statePath() const
+{
+    return stateIO(IOobject::NO_READ).objectPath();
+}
+
+
+Foam::autoPtr<Foam::IOdictionary> Foam::couplingOutput::readState() const
+{
+    IOobject io(stateIO(IOobject::MUST_READ));
+    if (mesh_.time().value() == 0 || !io.typeHeaderOk<IOdictionary>(true))
+    {
+        return nullptr;
+    }
+    return autoPtr<IOdictionary>(new IOdictionary(io));
+}
+
+
+void Foam::couplingOutput::write
+(
+    const vector* frameOrigin,
+    const std::function<void(dictionary&)>& addState
+)
+{
+    structure_.write(mesh_.time(), frameOrigin);
+
+    // ASCII (a dictionary cannot hold binary fields) with every digit, so
+    // that a restart continues exactly: the precision is set before the
+    // entries are added, because an entry is formatted when it is added
+    const unsigned precision = IOstream::defaultPrecision(17);
+    IOdictionary state(stateIO(IOobject::NO_READ));
+    addState(state);
+    state.writeObject
+    (
+        IOstream::ASCII,
+        IOstream::currentVersion,
+        IOstream::UNCOMPRESSED,
+        true
+    );
+    IOstream::defaultPrecision(precision);
+}
+
+
+void Foam::couplingOutput::writeSeries(const stepSummary& step)
+{
+    if (!Pstream::master())
+    {
+        return;
+    }
+    if (!series_.valid())
+    {
+        openSeries();
+    }
+    const point x
+    (
+        structure_.hasPayload() ? structure_.payloadPosition() : point::zero
+    );
+    const vector v
+    (
+        structure_.hasPayload() ? structure_.payloadVelocity() : vector::zero
+    );
+    const scalar diameter = structure_.projectedDiameter();
+    const scalar area = structure_.canopyArea();
+    const canopyStructure::energy e(structure_.energies());
+    // The canopy's area-weighted centre (ground frame): with the payload,
+    // the suspension's direction
+    const scalarField areas(structure_.triangleAreas());
+    const point centre
+    (
+        sum(areas*structure_.triangleCentres())/max(sum(areas), VSMALL)
+    );
+    const vector& f = step.load;
+    const vector& o = step.frameOrigin;
+    const vector& l = step.lineDrag;
+    series_()
+        << mesh_.time().value() << ' ' << x.x() << ' ' << x.y() << ' '
+        << x.z() << ' ' << v.x() << ' ' << v.y() << ' ' << v.z()
+        << ' ' << f.x() << ' ' << f.y() << ' ' << f.z()
+        << ' ' << diameter << ' ' << area
+        << ' ' << e.kinetic << ' ' << e.spring << ' ' << e.gravity
+        << ' ' << step.iterations << ' ' << step.residual << ' '
+        << step.slip << ' ' << step.subSteps
+        << ' ' << o.x() << ' ' << o.y() << ' ' << o.z()
+        << ' ' << l.x() << ' ' << l.y() << ' ' << l.z()
+        << ' ' << centre.x() << ' ' << centre.y() << ' ' << centre.z()
+        << endl;
+}
+
+
+// ************************************************************************* //

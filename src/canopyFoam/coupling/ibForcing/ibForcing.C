@@ -1,0 +1,334 @@
+/*---------------------------------------------------------------------------*\
+    canopyFoam: ibForcing.C — markers, stencils and multi-direct forcing of
+    the canopy.
+\*---------------------------------------------------------------------------*/
+
+#include "ibForcing.H"
+#include "readChoice.H"
+#include "readEntry.H"
+#include "treeDataCell.H"
+#include "indexedOctree.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::ibForcing::reportCoarseMarkers(const vectorField& h)
+{
+    // A marker in a cell more than 1.5 times the finest marker's cell lies
+    // past the finest refinement level around the canopy (a nested mesh,
+    // bin/canopy-mesh); said when the count changes (the same on every
+    // rank: h is)
+    scalar finest = GREAT;
+    forAll(h, m)
+    {
+        if (cmptMax(h[m]) > 0)
+        {
+            finest = min(finest, cmptMax(h[m]));
+        }
+    }
+    label coarse = 0;
+    forAll(h, m)
+    {
+        coarse += (cmptMax(h[m]) > 1.5*finest);
+    }
+    if (coarse != coarseMarkers_)
+    {
+        Info<< "canopyCoupling: t = " << mesh_.time().timeName() << ": "
+            << coarse << " of " << h.size() << " markers lie in cells"
+            << " coarser than the finest at the canopy (" << finest
+            << " m)" << (coarse ? ": the canopy reaches past the finest"
+               " refinement level" : "") << endl;
+        coarseMarkers_ = coarse;
+    }
+}
+
+
+Foam::tmp<Foam::scalarField> Foam::ibForcing::markerVolumes() const
+{
+    const vectorField& h = velocityStencil_->spacing();
+    tmp<scalarField> tdV(new scalarField(markers_->areas()));
+    scalarField& dV = tdV.ref();
+    forAll(dV, m)
+    {
+        dV[m] *= Foam::cbrt(h[m].x()*h[m].y()*h[m].z());
+    }
+    return tdV;
+}
+
+
+Foam::tmp<Foam::scalarField> Foam::ibForcing::localCellSizes
+(
+    const pointField& points,
+    const scalar deflt
+) const
+{
+    tmp<scalarField> tsize(new scalarField(points.size(), GREAT));
+    scalarField& size = tsize.ref();
+    const indexedOctree<treeDataCell>& tree = mesh_.cellTree();
+    forAll(points, i)
+    {
+        const label celli = tree.findInside(points[i]);
+        if (celli >= 0)
+        {
+            size[i] = Foam::cbrt(mesh_.V()[celli]);
+        }
+    }
+    Pstream::listCombineGather(size, minEqOp<scalar>());
+    Pstream::listCombineScatter(size);
+    forAll(size, i)
+    {
+        if (size[i] >= GREAT)
+        {
+            size[i] = deflt;
+        }
+    }
+    return tsize;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::ibForcing::ibForcing
+(
+    const dictionary& dict,
+    const fvMesh& mesh,
+    const canopyStructure& structure,
+    const labelList& restartLevels
+)
+:
+    mesh_(mesh),
+    forcingIterations_
+    (
+        canopyEntry::integer
+        (
+            dict, "forcingIterations", "coupling.forcingIterations", 2
+        )
+    ),
+    noSlip_
+    (
+        readChoice(dict, "tangential", "coupling.tangential", {"noSlip", "free"})
+     == "noSlip"
+    ),
+    pressureOffset_
+    (
+        canopyEntry::number
+        (
+            dict, "pressureOffset", "coupling.pressureOffset", 3
+        )
+    ),
+    kernelName_
+    (
+        canopyEntry::wordValue(dict, "kernel", "coupling.kernel", "roma3")
+    ),
+    uniformSpacing_(dict.found("markerSpacing")),
+    spacing_
+    (
+        canopyEntry::number
+        (
+            dict, "markerSpacing", "coupling.markerSpacing",
+            Foam::cbrt(gMin(mesh.V().field()))
+        )
+    ),
+    totalForce_(Zero),
+    coarseMarkers_(0)
+{
+    if (!(pressureOffset_ > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'coupling.pressureOffset' = " << pressureOffset_
+            << " must be > 0" << exit(FatalIOError);
+    }
+    if (forcingIterations_ < 1)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'coupling.forcingIterations' = " << forcingIterations_
+            << " must be >= 1" << exit(FatalIOError);
+    }
+    kernel_ = deltaKernel::New(kernelName_);
+    if (!(spacing_ > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'coupling.markerSpacing' = " << spacing_
+            << " must be > 0" << exit(FatalIOError);
+    }
+
+    // The triangles' subdivision: a restart's own, else from the spacing
+    labelList levels(restartLevels);
+    const label nTriangles = structure.nTriangles();
+    if (levels.size() != nTriangles)
+    {
+        const scalarField triangleSpacing
+        (
+            uniformSpacing_
+          ? scalarField(nTriangles, spacing_)
+          : localCellSizes(structure.triangleCentres(), spacing_)()
+        );
+        levels = canopyMarkers::levels(structure.model(), triangleSpacing);
+    }
+    markers_.reset(new canopyMarkers(structure.model(), levels));
+    velocityStencil_.reset(new ibStencil(mesh, kernel_()));
+    plusStencil_.reset(new ibStencil(mesh, kernel_()));
+    minusStencil_.reset(new ibStencil(mesh, kernel_()));
+    markerForce_.setSize(markers_->size(), Zero);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::ibForcing::place(const canopy_model* model, const vector& origin)
+{
+    markers_->update(model, origin);
+}
+
+
+Foam::string Foam::ibForcing::updateStencils()
+{
+    const canopyMarkers& mk = markers_();
+    velocityStencil_->update(mk.points());
+
+    // Pressure sampling points x -/+ delta n, delta in local cells along n
+    const vectorField& h = velocityStencil_->spacing();
+    const vectorField& n = mk.normals();
+    scalarField delta(mk.size());
+    forAll(delta, m)
+    {
+        const vector nn = cmptMag(n[m]);
+        delta[m] = pressureOffset_*(nn & h[m]);
+    }
+    plusStencil_->update(mk.points() + delta*n, n, mk.points(), 1);
+    minusStencil_->update(mk.points() - delta*n, n, mk.points(), -1);
+    reportCoarseMarkers(h);
+
+    // Every marker must have a stencil: a canopy leaving the mesh stops here
+    const boolList* flags[3] =
+    {
+        &velocityStencil_->valid(),
+        &plusStencil_->valid(),
+        &minusStencil_->valid()
+    };
+    const char* names[3] = {"velocity", "pressure (+ side)", "pressure (- side)"};
+    for (int s = 0; s < 3; ++s)
+    {
+        forAll(*flags[s], m)
+        {
+            if (!(*flags[s])[m])
+            {
+                OStringStream os;
+                os  << "marker " << m << " at " << mk.points()[m]
+                    << " has no " << names[s] << " stencil: the canopy is"
+                    << " leaving the mesh (or the mesh is too coarse near it)";
+                return os.str();
+            }
+        }
+    }
+    return string();
+}
+
+
+Foam::scalar Foam::ibForcing::forcingIncrement
+(
+    const volVectorField& U,
+    const scalarField& normalVelocity,
+    const vectorField& triangleVelocity,
+    const scalar Uref,
+    volVectorField& force
+)
+{
+    const scalar dt = mesh_.time().deltaTValue();
+    const canopyMarkers& mk = markers_();
+    const scalarField dV(markerVolumes());
+    const vectorField& n = mk.normals();
+    const scalarField vn(mk.toMarkers(normalVelocity));
+    const vectorField vt(mk.toMarkers(triangleVelocity));
+
+    // The iterations work on the markers' velocities alone: spreading F
+    // and advancing dt changes them by dt I S F (I interpolation, S
+    // spreading), which the stencils give without touching the whole mesh
+    vectorField Um(velocityStencil_->interpolate(U));
+    vectorField increment(mk.size(), Zero);
+    scalar slip = 0;
+
+    for (label k = 0; k < forcingIterations_; ++k)
+    {
+        vectorField F(mk.size());
+        forAll(F, m)
+        {
+            // Target: the normal velocity of the interface (canopy motion
+            // + porous seepage); tangentially the canopy's own velocity
+            // (no slip) or the fluid's (free slip).
+            const vector tangent =
+                noSlip_ ? (vt[m] - (vt[m] & n[m])*n[m])
+                        : (Um[m] - (Um[m] & n[m])*n[m]);
+            const vector target = tangent + vn[m]*n[m];
+            F[m] = (target - Um[m])*dV[m]/dt;
+            if (k == 0)
+            {
+                slip = max(slip, mag((Um[m] & n[m]) - vn[m]));
+            }
+        }
+        increment += F;
+        if (k + 1 < forcingIterations_)
+        {
+            List<vector> dUm;
+            velocityStencil_->interpolateSpread(F, dUm);
+            Um += dt*dUm;
+        }
+    }
+
+    markerForce_ += increment;
+    velocityStencil_->spread(increment, force.primitiveFieldRef());
+    totalForce_ = sum(markerForce_);
+    return slip/max(Uref, vn.size() ? max(mag(vn)) : 0);
+}
+
+
+void Foam::ibForcing::spread(vectorField& f) const
+{
+    velocityStencil_->spread(markerForce_, f);
+}
+
+
+void Foam::ibForcing::beginStep()
+{
+    markerForceStart_ = markerForce_;
+}
+
+
+void Foam::ibForcing::returnToStepStart()
+{
+    markerForce_ = markerForceStart_;
+}
+
+
+void Foam::ibForcing::writeState(dictionary& dict) const
+{
+    dict.add("markerForce", markerForce_);
+    dict.add("markerLevels", markers_->levels());
+}
+
+
+void Foam::ibForcing::readState(const dictionary& dict)
+{
+    const vectorField F(dict.get<vectorField>("markerForce"));
+    if (F.size() != markerForce_.size())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'markerForce' holds " << F.size() << " marker forces,"
+            << " but the canopy has " << markerForce_.size()
+            << " markers (were the canopy or coupling.markerSpacing changed"
+            << " since it was written?)" << exit(FatalIOError);
+    }
+    markerForce_ = F;
+}
+
+
+void Foam::ibForcing::writeInfo(Ostream& os) const
+{
+    os  << markers_->size() << " markers on " << markers_->levels().size()
+        << " canopy triangles (spacing "
+        << (uniformSpacing_ ? "" : "local cell size, min ") << spacing_
+        << " m), kernel " << kernelName_ << ", " << forcingIterations_
+        << " forcing iterations, " << (noSlip_ ? "noSlip" : "free");
+}
+
+
+// ************************************************************************* //
