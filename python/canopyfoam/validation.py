@@ -1522,6 +1522,17 @@ def two_level_lines(results, what, ratio=2.0):
     return lines + [""]
 
 
+# What a study's numbers cannot yet be trusted for, found by a later study;
+# printed with the study's section, its converged values and the main job's
+# summary line
+STUDY_CAVEATS = {}
+
+
+def study_caveat(study):
+    """The study's caveat (STUDY_CAVEATS), or None."""
+    return STUDY_CAVEATS.get(study)
+
+
 def converged(study):
     """The converged values of a resolution study, for the benchmarks: a
     dict {quantity: {finest, extrapolated, gci, kind, runs}} from the
@@ -1538,7 +1549,8 @@ def converged(study):
                          "has %d" % (study, len(done)))
     return {key: {"finest": f[0], "extrapolated": out["extrapolated"],
                   "gci": out["gci"], "kind": out["kind"],
-                  "runs": [r.ident for _, r in done]}
+                  "runs": [r.ident for _, r in done],
+                  "caveat": study_caveat(study)}
             for key, (f, out) in table.items() if out is not None}
 
 
@@ -1845,6 +1857,8 @@ def write_report():
                    ""]
         if name in ("resolution7ft", "resolutionT10"):
             md += gci_lines(results)
+        if study_caveat(name):
+            md += ["**Caveat.** " + study_caveat(name), ""]
         if name == "edgeLength7ft":
             md += ["The fabric's edge in finest cells; the structure's "
                    "resolution is the inverse of it.", ""]
