@@ -750,10 +750,13 @@ def _converged_line(study, cd0):
         conv = validation.converged(study)["C_D0 (weight)"]
     except (SystemExit, KeyError, OSError, ValueError):
         return None
-    return ("     converged C_D0 %.3g +- %.1f %% (GCI; %s, study %s); this "
+    line = ("     converged C_D0 %.3g +- %.1f %% (GCI; %s, study %s); this "
             "run's C_D0 differs by %+.0f %%" % (
                 conv["finest"], 100 * conv["gci"], conv["runs"][0], study,
                 100 * (cd0 / conv["finest"] - 1)))
+    if conv.get("caveat"):
+        line += "\n     caveat: " + conv["caveat"]
+    return line
 
 
 def format_summary(r):

@@ -130,11 +130,33 @@ def test_two_levels():
                  lines[:1])
 
 
+def test_caveat():
+    """A study's caveat travels with its converged values into a run's
+    summary line (report._converged_line), from the committed records."""
+    from canopyfoam import report
+    saved = dict(validation.STUDY_CAVEATS)
+    try:
+        validation.STUDY_CAVEATS.clear()
+        plain = report._converged_line("resolution7ft", 0.8)
+        validation.STUDY_CAVEATS["resolution7ft"] = "a test's caveat"
+        warned = report._converged_line("resolution7ft", 0.8)
+    finally:
+        validation.STUDY_CAVEATS.clear()
+        validation.STUDY_CAVEATS.update(saved)
+    shared.check("a study without a caveat: one line",
+                 plain is not None and "caveat" not in plain, plain)
+    shared.check("a study's caveat follows its converged line",
+                 warned is not None
+                 and warned.endswith("\n     caveat: a test's caveat"),
+                 warned)
+
+
 def main():
     test_orders()
     test_fallbacks()
     test_breathing_modes()
     test_two_levels()
+    test_caveat()
     if shared.failures:
         print("FAIL: %d check(s) failed: %s" % (len(shared.failures),
                                                ", ".join(shared.failures)))
