@@ -713,82 +713,78 @@ RUNS += [
           edits=[(MESH_DICT, "edgeLengthPerCell", "%g" % e)])
     for e in (0.83, 1.88)
 ]
+def seven_from_rest(ident, setting, options=(), edits=()):
+    """A run of the 7 ft tutorial from rest to 12 s, read over 5-12 s (a
+    12-cell run keeps the tutorial's endTime of 12 s; a finer one sets
+    it, as -cellsPerDiameter runs do)."""
+    return Run(ident, SEVEN, setting + ", to 12 s; interval 5-12 s",
+               list(options), list(edits), reference="7ft", steady_start=5,
+               steady_end=12)
+
+
+CPD18 = ["-cellsPerDiameter", "18"]
+TO_12 = [("system/controlDict", "endTime", "12")]
 # The coupling's relaxation: Aitken's factor from 1 (the tutorial's since
 # issue 31's coupling work) against from 0.3 (every run above made before
-# it), from rest to 12 s and read over 5-12 s, at 12 and 18 cells across D0
+# it), at 12 and 18 cells across D0
 RELAX_ONE = [(PROPS, "coupling/initialRelaxation", "1")]
+RELAX_03 = [(PROPS, "coupling/initialRelaxation", "0.3")]
 RUNS += [
-    Run("7ft-relax1", SEVEN, "box 8 D0 wide, 12 cells across D0, Aitken's "
-        "factor from 1, to 12 s; interval 5-12 s", edits=RELAX_ONE,
-        reference="7ft", steady_start=5, steady_end=12),
-    Run("7ft-cpd18-relax1", SEVEN, "box 8 D0 wide, 18 cells across D0, "
-        "Aitken's factor from 1, to 12 s; interval 5-12 s",
-        ["-cellsPerDiameter", "18"],
-        RELAX_ONE + [("system/controlDict", "endTime", "12")],
-        reference="7ft", steady_start=5, steady_end=12),
+    seven_from_rest("7ft-relax1", "box 8 D0 wide, 12 cells across D0, "
+                    "Aitken's factor from 1", edits=RELAX_ONE),
+    seven_from_rest("7ft-cpd18-relax1", "box 8 D0 wide, 18 cells across "
+                    "D0, Aitken's factor from 1", CPD18, RELAX_ONE + TO_12),
 ]
 # The coupling's tolerance: 1e-3 of 4 m/s instead of 5e-3 (at most 40
 # coupling iterations a step instead of 20), with the factor from 0.3 and
-# from 1, at 12 cells across D0 to 12 s, read over 5-12 s: does the
-# answer depend on the relaxation once the coupling converges further?
+# from 1: does the answer depend on the relaxation once the coupling
+# converges further?
 TIGHT = [(PROPS, "coupling/tolerance", "1e-3"),
          ("system/fvSolution", "PIMPLE/nOuterCorrectors", "40")]
 RUNS += [
-    Run("7ft-tol1e-3", SEVEN, "box 8 D0 wide, 12 cells across D0, coupling "
-        "tolerance 1e-3, Aitken's factor from 0.3, to 12 s; interval 5-12 s",
-        edits=TIGHT + [(PROPS, "coupling/initialRelaxation", "0.3")],
-        reference="7ft", steady_start=5, steady_end=12),
-    Run("7ft-tol1e-3-relax1", SEVEN, "box 8 D0 wide, 12 cells across D0, "
-        "coupling tolerance 1e-3, Aitken's factor from 1, to 12 s; interval "
-        "5-12 s", edits=TIGHT + RELAX_ONE,
-        reference="7ft", steady_start=5, steady_end=12),
-    Run("7ft-cpd18-tol1e-3", SEVEN, "box 8 D0 wide, 18 cells across D0, "
-        "coupling tolerance 1e-3, Aitken's factor from 0.3, to 12 s; "
-        "interval 5-12 s", ["-cellsPerDiameter", "18"],
-        TIGHT + [(PROPS, "coupling/initialRelaxation", "0.3"),
-                 ("system/controlDict", "endTime", "12")],
-        reference="7ft", steady_start=5, steady_end=12),
-    Run("7ft-cpd18-tol1e-3-relax1", SEVEN, "box 8 D0 wide, 18 cells across "
-        "D0, coupling tolerance 1e-3, Aitken's factor from 1, to 12 s; "
-        "interval 5-12 s", ["-cellsPerDiameter", "18"],
-        TIGHT + RELAX_ONE + [("system/controlDict", "endTime", "12")],
-        reference="7ft", steady_start=5, steady_end=12),
+    seven_from_rest("7ft-tol1e-3", "box 8 D0 wide, 12 cells across D0, "
+                    "coupling tolerance 1e-3, Aitken's factor from 0.3",
+                    edits=TIGHT + RELAX_03),
+    seven_from_rest("7ft-tol1e-3-relax1", "box 8 D0 wide, 12 cells across "
+                    "D0, coupling tolerance 1e-3, Aitken's factor from 1",
+                    edits=TIGHT + RELAX_ONE),
+    seven_from_rest("7ft-cpd18-tol1e-3", "box 8 D0 wide, 18 cells across "
+                    "D0, coupling tolerance 1e-3, Aitken's factor from 0.3",
+                    CPD18, TIGHT + RELAX_03 + TO_12),
+    seven_from_rest("7ft-cpd18-tol1e-3-relax1", "box 8 D0 wide, 18 cells "
+                    "across D0, coupling tolerance 1e-3, Aitken's factor "
+                    "from 1", CPD18, TIGHT + RELAX_ONE + TO_12),
 ]
 # Tighter still: 5e-4 of 4 m/s (at most 40 iterations), with p solved to
 # relTol 0 on every outer iteration (with p to 0.01, 2e-4 stalled at 5e-4
-# while the canopy inflated), Aitken's factor from 1, at 12 and 18 cells
+# while the canopy inflated), Aitken's factor from 1
 TIGHTER = [(PROPS, "coupling/tolerance", "5e-4"),
            ("system/fvSolution", "PIMPLE/nOuterCorrectors", "40"),
            ("system/fvSolution", "solvers/p/relTol", "0")]
 RUNS += [
-    Run("7ft-tol5e-4-relax1", SEVEN, "box 8 D0 wide, 12 cells across D0, "
-        "coupling tolerance 5e-4, p to relTol 0, Aitken's factor from 1, to "
-        "12 s; interval 5-12 s", edits=TIGHTER + RELAX_ONE,
-        reference="7ft", steady_start=5, steady_end=12),
-    Run("7ft-cpd18-tol5e-4-relax1", SEVEN, "box 8 D0 wide, 18 cells across "
-        "D0, coupling tolerance 5e-4, p to relTol 0, Aitken's factor from 1, "
-        "to 12 s; interval 5-12 s", ["-cellsPerDiameter", "18"],
-        TIGHTER + RELAX_ONE + [("system/controlDict", "endTime", "12")],
-        reference="7ft", steady_start=5, steady_end=12),
+    seven_from_rest("7ft-tol5e-4-relax1", "box 8 D0 wide, 12 cells across "
+                    "D0, coupling tolerance 5e-4, p to relTol 0, Aitken's "
+                    "factor from 1", edits=TIGHTER + RELAX_ONE),
+    seven_from_rest("7ft-cpd18-tol5e-4-relax1", "box 8 D0 wide, 18 cells "
+                    "across D0, coupling tolerance 5e-4, p to relTol 0, "
+                    "Aitken's factor from 1", CPD18,
+                    TIGHTER + RELAX_ONE + TO_12),
 ]
-# The same at 18 cells across D0 against 7ft-cpd18-relax1 (Aitken's
-# factor from 1, to 12 s, read over 5-12 s), the finest level at which such
-# a run takes about half an hour on 2 cores: the Courant number halved,
-# the fabric's edge 1.5 times finer than the default 1.25 finest cells
+# The time step and the fabric's edge at 18 cells across D0 against
+# 7ft-cpd18-relax1, the finest level at which such a run takes about half
+# an hour on 2 cores: the Courant number halved, the fabric's edge 1.5
+# times finer than the default 1.25 finest cells
 RUNS += [
-    Run("7ft-cpd18-co0.25", SEVEN, "box 8 D0 wide, 18 cells across D0, "
-        "Aitken's factor from 1, maxCo 0.25 (maxDeltaT 0.005), to 12 s; "
-        "interval 5-12 s", ["-cellsPerDiameter", "18"],
-        RELAX_ONE + [("system/controlDict", "endTime", "12"),
-                     ("system/controlDict", "maxCo", "0.25"),
-                     ("system/controlDict", "maxDeltaT", "0.005")],
-        reference="7ft", steady_start=5, steady_end=12),
-    Run("7ft-cpd18-edge0.83", SEVEN, "box 8 D0 wide, 18 cells across D0, "
-        "Aitken's factor from 1, fabric edge 0.83 cells, to 12 s; interval "
-        "5-12 s", ["-cellsPerDiameter", "18"],
-        RELAX_ONE + [("system/controlDict", "endTime", "12"),
-                     (MESH_DICT, "edgeLengthPerCell", "0.83")],
-        reference="7ft", steady_start=5, steady_end=12),
+    seven_from_rest("7ft-cpd18-co0.25", "box 8 D0 wide, 18 cells across "
+                    "D0, Aitken's factor from 1, maxCo 0.25 (maxDeltaT "
+                    "0.005)", CPD18,
+                    RELAX_ONE + TO_12
+                    + [("system/controlDict", "maxCo", "0.25"),
+                       ("system/controlDict", "maxDeltaT", "0.005")]),
+    seven_from_rest("7ft-cpd18-edge0.83", "box 8 D0 wide, 18 cells across "
+                    "D0, Aitken's factor from 1, fabric edge 0.83 cells",
+                    CPD18, RELAX_ONE + TO_12
+                    + [(MESH_DICT, "edgeLengthPerCell", "0.83")]),
 ]
 # The pressure solver: the coupling ends the outer loop after the fluid
 # has been solved, so no outer iteration is known to be the last in time
