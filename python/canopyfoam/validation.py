@@ -799,6 +799,11 @@ RUNS += [
                     "across D0, coupling tolerance 2.5e-4, p to relTol 0, "
                     "Aitken's factor from 1", CPD18,
                     TIGHTEST + RELAX_ONE + TO_12),
+    seven_from_rest("7ft-cpd18-tol1e-3-pTight-relax1", "box 8 D0 wide, 18 "
+                    "cells across D0, coupling tolerance 1e-3, p to relTol "
+                    "0, Aitken's factor from 1", CPD18,
+                    TIGHT + [("system/fvSolution", "solvers/p/relTol", "0")]
+                    + RELAX_ONE + TO_12),
     seven_from_rest("7ft-cpd18-tol1e-3-relax1-splitx", "box 8 D0 wide, 18 "
                     "cells across D0, coupling tolerance 1e-3, Aitken's "
                     "factor from 1, box split across the flow", CPD18,
@@ -972,7 +977,8 @@ STUDIES = [
      "the runs' scatter (18 cells across D0, Aitken's factor from 1; "
      "splitx: the same run with the box split across the flow)",
      ["7ft-cpd18-relax1", "7ft-cpd18-tol1e-3-relax1",
-      "7ft-cpd18-tol1e-3-relax1-splitx", "7ft-cpd18-tol5e-4-relax1",
+      "7ft-cpd18-tol1e-3-relax1-splitx", "7ft-cpd18-tol1e-3-pTight-relax1",
+      "7ft-cpd18-tol5e-4-relax1",
       "7ft-cpd18-tol5e-4-relax1-splitx", "7ft-cpd18-tol2.5e-4-relax1"]),
     ("timeStep7ftCpd18", "7 ft canopy: the time step (18 cells across D0)",
      ["7ft-cpd18-relax1", "7ft-cpd18-co0.25"]),
