@@ -127,7 +127,12 @@ void checkLine
 {
     Info<< name.c_str() << nl;
     oneLine line(a, b, v);
-    lineDrag drag(dragDict(spacing), mesh, kernel, line.model, 1);
+    const dictionary dict(dragDict(spacing));
+    lineDrag drag
+    (
+        scopedEntryReader(dict, "coupling.lineDrag"), mesh, kernel,
+        line.model, 1
+    );
     drag.place(line.model, Zero);
     drag.compute(U, line.model, V, rho);
     const vector total = drag.total();
@@ -186,7 +191,11 @@ void expectBadEntry
     string message("no error");
     try
     {
-        lineDrag drag(dict, mesh, kernel, model, 0.1);
+        lineDrag drag
+        (
+            scopedEntryReader(dict, "coupling.lineDrag"), mesh, kernel,
+            model, 0.1
+        );
     }
     catch (const Foam::IOerror& err)
     {
@@ -349,6 +358,13 @@ int main(int argc, char *argv[])
         (
             "Cf -0.01", negativeCf, mesh, kernel(), line.model,
             "coupling.lineDrag.Cf"
+        );
+        dictionary unknownEntry(dragDict(0.1));
+        unknownEntry.add("Cdd", 1.0);
+        expectBadEntry
+        (
+            "unknown Cdd", unknownEntry, mesh, kernel(), line.model,
+            "coupling.lineDrag.Cdd"
         );
         dictionary zeroSpacing(dragDict(0.1));
         zeroSpacing.set("spacing", 0.0);

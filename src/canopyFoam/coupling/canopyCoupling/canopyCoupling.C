@@ -5,9 +5,6 @@
 
 #include "canopyCoupling.H"
 #include "surfaceInterpolate.H"
-#include "switchToken.H"
-#include "readChoice.H"
-#include "readEntry.H"
 #include "addedMassStabiliser.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
@@ -15,44 +12,50 @@
 namespace
 {
 
-// A switch entry coupling.<key> (true/false, on/off, yes/no); anything else
-// stops naming the entry
-bool readSwitch
-(
-    const Foam::dictionary& dict,
-    const Foam::word& key,
-    const bool deflt
-)
+// The coupling's entries that now live in a part's sub-dictionary: each
+// stops naming its new place and how to write it there
+void rejectMovedEntries(const Foam::scopedEntryReader& coupling)
 {
-    using namespace Foam;
-    if (!dict.found(key))
+    static const struct
     {
-        return deflt;
-    }
-    if (dict.isDict(key))
+        const char* key;        // the entry in the coupling dictionary
+        const char* section;    // the sub-dictionary it moved to
+        const char* newKey;     // its name there
+        const char* with;       // what the example writes before it
+    } moved[] =
     {
-        canopyEntry::fail
-        (
-            dict, key, "coupling." + key,
-            "must be a switch (true/false, on/off, yes/no)"
-        );
-    }
-    ITstream& is = dict.lookup(key);
-    bool value = deflt;
-    if (is.size() == 1 && readSwitchToken(is[0], value))
+        {"kernel", "forcing", "kernel", ""},
+        {"markerSpacing", "forcing", "markerSpacing", ""},
+        {"forcingIterations", "forcing", "iterations", ""},
+        {"tangential", "forcing", "tangential", ""},
+        {"pressureOffset", "forcing", "pressureOffset", ""},
+        {"pressureJump", "load", "type", ""},
+        {"tangentialLoad", "load", "tangential", "type ibForce; "},
+        {"acceleration", "acceleration", "type", ""},
+        {"initialRelaxation", "acceleration", "initial", "type aitken; "},
+        {"maxRelaxation", "acceleration", "max", "type aitken; "},
+        {"reuse", "acceleration", "reuse", "type IQN-ILS; "},
+        {"filter", "acceleration", "filter", "type IQN-ILS; "},
+        {"addedMass", "addedMass", "mass", ""},
+        {"addedMassPredictor", "addedMass", "predictor", "mass ..; "},
+        {"addedMassBalance", "addedMass", "balance", "mass ..; "},
+        {"addedMassDirection", "addedMass", "direction", "mass ..; "},
+    };
+    for (const auto& m : moved)
     {
-        return value;
+        // acceleration and addedMass are sub-dictionaries now: only a
+        // value in their place has moved
+        if (coupling.found(m.key) && !coupling.dict().isDict(m.key))
+        {
+            coupling.rejectMoved
+            (
+                m.key,
+                coupling.name(m.section) + '.' + m.newKey,
+                std::string(m.section) + " { " + m.with + m.newKey + ' '
+              + coupling.given(m.key) + "; }"
+            );
+        }
     }
-    OStringStream given;
-    forAll(is, i)
-    {
-        given << (i ? " " : "") << is[i];
-    }
-    FatalIOErrorInFunction(dict)
-        << "Entry 'coupling." << key << "' = " << given.str().c_str()
-        << " must be a switch (true/false, on/off, yes/no)"
-        << exit(FatalIOError);
-    return deflt;
 }
 
 
@@ -244,6 +247,17 @@ void Foam::canopyCoupling::writeSeries()
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
+Foam::wordList Foam::canopyCoupling::validKeys()
+{
+    return
+    {
+        "scheme", "rho", "tolerance", "Uref", "residualNorm",
+        "stopIfNotConverged", "restartFluid", "U",
+        "forcing", "load", "acceleration", "addedMass", "lineDrag", "frame"
+    };
+}
+
+
 Foam::canopyCoupling::canopyCoupling
 (
     const fvMesh& mesh
@@ -292,86 +306,45 @@ Foam::canopyCoupling::canopyCoupling
     // up only the points it holds (a deadlock otherwise)
     (void)mesh_.tetBasePtIs();
 
-    if
+    const scopedEntryReader coupling
     (
-        structure_.dict().found("coupling")
-     && !structure_.dict().isDict("coupling")
-    )
-    {
-        canopyEntry::fail
+        scopedEntryReader(structure_.dict(), "").optionalSubReader("coupling")
+    );
+    rejectMovedEntries(coupling);
+    coupling.rejectUnknown(validKeys());
+
+    scheme_ =
+        coupling.choice
         (
-            structure_.dict(), "coupling", "coupling",
-            "must be a sub-dictionary { scheme ..; ... }"
-        );
-    }
-    const dictionary& dict = structure_.dict().subOrEmptyDict("coupling");
-
-    // Every entry this class and its parts read; any other is reported
-    canopyEntry::reportUnknown
-    (
-        dict, "coupling.",
-        {
-            "scheme", "rho", "kernel", "markerSpacing", "forcingIterations",
-            "tangential", "pressureOffset", "tolerance", "Uref",
-            "residualNorm", "acceleration", "initialRelaxation",
-            "maxRelaxation", "reuse", "filter", "restartFluid", "addedMass",
-            "addedMassPredictor", "addedMassBalance", "addedMassDirection",
-            "pressureJump", "tangentialLoad", "stopIfNotConverged",
-            "lineDrag", "U", "frame"
-        }
-    );
-
-    const word schemeName
-    (
-        canopyEntry::wordValue(dict, "scheme", "coupling.scheme", "strong")
-    );
-    if (schemeName == "strong")
-    {
-        scheme_ = scheme::strong;
-    }
-    else if (schemeName == "explicit")
-    {
-        scheme_ = scheme::explicitScheme;
-    }
-    else
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'coupling.scheme' = " << schemeName
-            << " is not a coupling scheme; valid: strong explicit"
-            << exit(FatalIOError);
-    }
-
-    rho_ = canopyEntry::number(dict, "rho", "coupling.rho", 1.2);
-    tolerance_ = canopyEntry::number(dict, "tolerance", "coupling.tolerance", 1e-3);
-    Uref_ = canopyEntry::number(dict, "Uref", "coupling.Uref", 1);
+            "scheme", {"strong", "explicit"}, "coupling scheme", "strong"
+        )
+     == "strong"
+      ? scheme::strong
+      : scheme::explicitScheme;
+    rho_ = coupling.positive("rho", "fluid density [kg/m^3]", 1.2);
+    tolerance_ = coupling.positive("tolerance", "coupling tolerance", 1e-3);
+    Uref_ = coupling.positive("Uref", "velocity scale [m/s]", 1);
     rmsResidual_ =
-        readChoice(dict, "residualNorm", "coupling.residualNorm", {"max", "rms"})
+        coupling.choice
+        (
+            "residualNorm", {"max", "rms"}, "residual norm", "max"
+        )
      == "rms";
-    stopIfNotConverged_ = readSwitch(dict, "stopIfNotConverged", true);
-    restartFluid_ = readSwitch(dict, "restartFluid", false);
-    load_ = clothLoad::New
+    stopIfNotConverged_ = coupling.flag("stopIfNotConverged", true);
+    restartFluid_ = coupling.flag("restartFluid", false);
+    UName_ = coupling.wordValue("U", "velocity field name", "U");
+    load_ = clothLoad::New(coupling.optionalSubReader("load"), rho_);
+    addedMass_.reset
     (
-        dict, rho_, readSwitch(dict, "tangentialLoad", false)
+        new addedMassStabiliser
+        (
+            coupling.optionalSubReader("addedMass"), structure_
+        )
     );
-    addedMass_.reset(new addedMassStabiliser(dict, structure_));
-
-    const struct { const char* name; scalar value; scalar lo; } positive[] =
-    {
-        {"rho", rho_, 0},
-        {"tolerance", tolerance_, 0},
-        {"Uref", Uref_, 0},
-    };
-    for (const auto& p : positive)
-    {
-        if (!(p.value > p.lo))
-        {
-            FatalIOErrorInFunction(dict)
-                << "Entry 'coupling." << p.name << "' = " << p.value
-                << " must be > 0" << exit(FatalIOError);
-        }
-    }
-    acceleration_ = interfaceAcceleration::New(dict);
-    frame_ = canopyFrame::New(dict, mesh, structure_);
+    acceleration_ =
+        interfaceAcceleration::New(coupling.optionalSubReader("acceleration"));
+    frame_ =
+        canopyFrame::New(coupling.optionalSubReader("frame"), mesh, structure_);
 
     // A restart continues from the structure's state at the start time
     // (canopyStructure::startsFrom decides; the constructor has read an
@@ -403,28 +376,19 @@ Foam::canopyCoupling::canopyCoupling
     (
         new ibForcing
         (
-            dict, mesh, structure_,
+            coupling.optionalSubReader("forcing"), mesh, structure_,
             state.valid()
           ? state->getOrDefault<labelList>("markerLevels", labelList())
           : labelList()
         )
     );
-    UName_ = canopyEntry::wordValue(dict, "U", "coupling.U", "U");
-    if (dict.found("lineDrag"))
+    if (coupling.optionalDict("lineDrag"))
     {
-        if (!dict.isDict("lineDrag"))
-        {
-            canopyEntry::fail
-            (
-                dict, "lineDrag", "coupling.lineDrag",
-                "must be a sub-dictionary { diameter ..; }"
-            );
-        }
         lineDrag_.reset
         (
             new lineDrag
             (
-                dict.subDict("lineDrag"), mesh, ib_->kernel(),
+                coupling.optionalSubReader("lineDrag"), mesh, ib_->kernel(),
                 structure_.model(), ib_->spacing()
             )
         );
