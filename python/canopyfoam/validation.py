@@ -770,6 +770,44 @@ RUNS += [
                     "Aitken's factor from 1", CPD18,
                     TIGHTER + RELAX_ONE + TO_12),
 ]
+# Tighter still at 18 cells across D0: 2.5e-4 of 4 m/s (at most 60
+# iterations), p to relTol 0, Aitken's factor from 1: is 5e-4 converged?
+TIGHTEST = [(PROPS, "coupling/tolerance", "2.5e-4"),
+            ("system/fvSolution", "PIMPLE/nOuterCorrectors", "60"),
+            ("system/fvSolution", "solvers/p/relTol", "0")]
+# The runs' own scatter: the same run with the box split across the flow
+# (x) instead of along it (z) between the 2 ranks. The linear solvers'
+# answers then differ at their tolerances from the first step on, a
+# perturbation of the size every run carries; how far the 5-12 s means
+# move under it is the scatter a tolerance's effect must exceed
+SPLIT_ACROSS = [("system/decomposeParDict", "coeffs/n", "(2 1 1)")]
+RUNS += [
+    seven_from_rest("7ft-relax1-splitx", "box 8 D0 wide, 12 cells across "
+                    "D0, Aitken's factor from 1, box split across the flow",
+                    edits=RELAX_ONE + SPLIT_ACROSS),
+    seven_from_rest("7ft-tol1e-3-relax1-splitx", "box 8 D0 wide, 12 cells "
+                    "across D0, coupling tolerance 1e-3, Aitken's factor "
+                    "from 1, box split across the flow",
+                    edits=TIGHT + RELAX_ONE + SPLIT_ACROSS),
+    seven_from_rest("7ft-tol5e-4-relax1-splitx", "box 8 D0 wide, 12 cells "
+                    "across D0, coupling tolerance 5e-4, p to relTol 0, "
+                    "Aitken's factor from 1, box split across the flow",
+                    edits=TIGHTER + RELAX_ONE + SPLIT_ACROSS),
+]
+RUNS += [
+    seven_from_rest("7ft-cpd18-tol2.5e-4-relax1", "box 8 D0 wide, 18 cells "
+                    "across D0, coupling tolerance 2.5e-4, p to relTol 0, "
+                    "Aitken's factor from 1", CPD18,
+                    TIGHTEST + RELAX_ONE + TO_12),
+    seven_from_rest("7ft-cpd18-tol1e-3-relax1-splitx", "box 8 D0 wide, 18 "
+                    "cells across D0, coupling tolerance 1e-3, Aitken's "
+                    "factor from 1, box split across the flow", CPD18,
+                    TIGHT + RELAX_ONE + TO_12 + SPLIT_ACROSS),
+    seven_from_rest("7ft-cpd18-tol5e-4-relax1-splitx", "box 8 D0 wide, 18 "
+                    "cells across D0, coupling tolerance 5e-4, p to relTol "
+                    "0, Aitken's factor from 1, box split across the flow",
+                    CPD18, TIGHTER + RELAX_ONE + TO_12 + SPLIT_ACROSS),
+]
 # The time step and the fabric's edge at 18 cells across D0 against
 # 7ft-cpd18-relax1, the finest level at which such a run takes about half
 # an hour on 2 cores: the Courant number halved, the fabric's edge 1.5
@@ -924,6 +962,18 @@ STUDIES = [
       "7ft-tol5e-4-relax1", "7ft-cpd18", "7ft-cpd18-relax1",
       "7ft-cpd18-tol1e-3", "7ft-cpd18-tol1e-3-relax1",
       "7ft-cpd18-tol5e-4-relax1"]),
+    ("tolerance7ft", "7 ft canopy: the coupling's tolerance against the "
+     "runs' scatter (12 cells across D0, Aitken's factor from 1; splitx: "
+     "the same run with the box split across the flow)",
+     ["7ft-relax1", "7ft-relax1-splitx", "7ft-tol1e-3-relax1",
+      "7ft-tol1e-3-relax1-splitx", "7ft-tol5e-4-relax1",
+      "7ft-tol5e-4-relax1-splitx"]),
+    ("tolerance7ftCpd18", "7 ft canopy: the coupling's tolerance against "
+     "the runs' scatter (18 cells across D0, Aitken's factor from 1; "
+     "splitx: the same run with the box split across the flow)",
+     ["7ft-cpd18-relax1", "7ft-cpd18-tol1e-3-relax1",
+      "7ft-cpd18-tol1e-3-relax1-splitx", "7ft-cpd18-tol5e-4-relax1",
+      "7ft-cpd18-tol5e-4-relax1-splitx", "7ft-cpd18-tol2.5e-4-relax1"]),
     ("timeStep7ftCpd18", "7 ft canopy: the time step (18 cells across D0)",
      ["7ft-cpd18-relax1", "7ft-cpd18-co0.25"]),
     ("edgeLength7ftCpd18", "7 ft canopy: the structure's resolution (18 "
@@ -1520,6 +1570,66 @@ def two_level_lines(results, what, ratio=2.0):
     return lines + [""]
 
 
+SCATTER_SUFFIX = "-splitx"
+
+
+def scatter_lines(results):
+    """The runs' own scatter, as markdown: each run X whose study also has
+    X-splitx (the same run with the box split across the flow between the
+    ranks, so that the linear solvers' answers differ at their tolerances
+    from the first step on) is compared with it. Two runs that differ only
+    in such a perturbation sample the same statistics, so their means'
+    difference d has the standard deviation sqrt(2) s of one run's mean;
+    each run's stated 95 % half-width h (report.mean_confidence) claims
+    s = h / 1.96, so |d| / (sqrt(2) h) exceeds 1 in one pair in twenty if
+    the half-widths are right, in most pairs if they understate it; the pooled
+    s = rms(d) / sqrt(2) over the pairs is the scatter measured directly."""
+    done = dict((run.ident, rec["analysis"]) for run, rec in results
+                if rec is not None and rec["complete"]
+                and rec["analysis"] is not None)
+    pairs = [(i, i + SCATTER_SUFFIX) for i in done
+             if i + SCATTER_SUFFIX in done]
+    if not pairs:
+        return []
+    lines = ["The runs' scatter: each run against the same run with the box "
+             "split across the flow (its linear solvers' answers differ at "
+             "their tolerances from the first step on). d is the "
+             "difference of the means; the ratio |d| / (sqrt(2) h), with h "
+             "the larger of the two runs' 95 % half-widths, exceeds 1 in one "
+             "pair in twenty if the half-widths are right; in most pairs, "
+             "if they understate the scatter.", "",
+             "| run | descent [m/s] | split across | d [m/s] | ratio | "
+             "C_D0 | split across | d C_D0 |",
+             "|---|---|---|---|---|---|---|---|"]
+    diffs, cd_diffs = [], []
+    for a_id, b_id in pairs:
+        a, b = done[a_id], done[b_id]
+        va, vb = a["descentVelocity"], b["descentVelocity"]
+        ca = a["dragCoefficient"]["weightBalance"]
+        cb = b["dragCoefficient"]["weightBalance"]
+        d = vb["mean"] - va["mean"]
+        diffs.append(d)
+        cd_diffs.append(cb - ca)
+        halves = [v.get("ci95") for v in (va, vb)]
+        ratio = ("%.1f" % (abs(d) / (math.sqrt(2) * max(halves)))
+                 if None not in halves and max(halves) > 0 else "-")
+        lines.append("| %s | %.3f ± %s | %.3f ± %s | %+.3f | %s | %.3f | "
+                     "%.3f | %+.3f |" % (
+                         a_id, va["mean"], fmt_half(halves[0]), vb["mean"],
+                         fmt_half(halves[1]), d, ratio, ca, cb, cb - ca))
+    rms = lambda xs: math.sqrt(sum(x * x for x in xs) / len(xs))
+    lines += ["", "Pooled over the %d pair(s): one run's mean scatters by "
+              "s = rms(d) / sqrt(2) = %.3f m/s in the descent and %.3f in "
+              "C_D0." % (len(pairs), rms(diffs) / math.sqrt(2),
+                          rms(cd_diffs) / math.sqrt(2)), ""]
+    return lines
+
+
+def fmt_half(h):
+    """A 95 % half-width for a table, '-' when there is none."""
+    return "-" if h is None else "%.3f" % h
+
+
 # What a study's numbers cannot yet be trusted for, found by a later study;
 # printed with the study's section, its converged values and the main job's
 # summary line
@@ -1896,6 +2006,8 @@ def write_report():
                    "p solved to relTol 0.01 stalled at 5e-4 in 40 "
                    "iterations while the canopy inflated (t = 0.34 s), so "
                    "the tightest level solves p to relTol 0.", ""]
+        if name in ("tolerance7ft", "tolerance7ftCpd18"):
+            md += scatter_lines(results)
         if name == "timeStep7ftCpd18":
             md += two_level_lines(results, "the time step at 18 cells "
                                   "across D0 (maxCo 0.5 and 0.25)")

@@ -14,7 +14,9 @@ order; equal cell sizes are refused. validation.resolution_estimates
 gives the breathing frequency a GCI only when the three levels' peaks
 are one mode (within validation.BREATHING_SAME_MODE of each other).
 validation.two_level_lines gives two runs Roache's Fs = 3 estimate for
-any refinement ratio.
+any refinement ratio. validation.scatter_lines pairs each run with its
+"-splitx" twin: the difference of their means, its ratio to sqrt(2) times
+the larger 95 % half-width, and the pooled scatter rms(d)/sqrt(2).
 """
 
 import math
@@ -130,6 +132,41 @@ def test_two_levels():
                  lines[:1])
 
 
+def test_scatter():
+    """Pairs X / X-splitx: d = mean(X-splitx) - mean(X), the ratio |d| /
+    (sqrt(2) h) and the pooled s = rms(d) / sqrt(2); a run without a twin
+    is left out."""
+    def rec(v, half, cd):
+        r = fake_record(None, descent=v)
+        r["analysis"]["descentVelocity"]["ci95"] = half
+        r["analysis"]["dragCoefficient"]["weightBalance"] = cd
+        return r
+    runs = [(validation.Run(i, "parachutes/flatCircular7ft", i), r)
+            for i, r in (("a", rec(5.0, 0.05, 0.80)),
+                         ("a-splitx", rec(5.3, 0.10, 0.70)),
+                         ("b", rec(6.0, 0.02, 0.60)),
+                         ("b-splitx", rec(5.9, 0.02, 0.62)),
+                         ("c", rec(7.0, 0.02, 0.50)))]
+    lines = validation.scatter_lines(runs)
+    rows = [line for line in lines if line.startswith("| a |")
+            or line.startswith("| b |") or line.startswith("| c |")]
+    shared.check("scatter: two pairs, the run without a twin left out",
+                 len(rows) == 2, rows)
+    want_a = "| a | 5.000 ± 0.050 | 5.300 ± 0.100 | +0.300 | %.1f |" % (
+        0.3 / (math.sqrt(2) * 0.1))
+    shared.check("scatter: pair a's difference and ratio",
+                 bool(rows) and rows[0].startswith(want_a), rows[:1])
+    s_v = math.sqrt((0.3 ** 2 + 0.1 ** 2) / 2) / math.sqrt(2)
+    s_cd = math.sqrt((0.1 ** 2 + 0.02 ** 2) / 2) / math.sqrt(2)
+    pooled = [line for line in lines if line.startswith("Pooled")]
+    shared.check("scatter: pooled s %.3f m/s, %.3f in C_D0" % (s_v, s_cd),
+                 pooled and ("s = rms(d) / sqrt(2) = %.3f m/s" % s_v)
+                 in pooled[0] and ("and %.3f in C_D0" % s_cd) in pooled[0],
+                 pooled)
+    shared.check("scatter: no pairs, no lines",
+                 validation.scatter_lines(runs[4:]) == [], "")
+
+
 def test_caveat():
     """A study's caveat travels with its converged values into a run's
     summary line (report._converged_line), from the committed records."""
@@ -156,6 +193,7 @@ def main():
     test_fallbacks()
     test_breathing_modes()
     test_two_levels()
+    test_scatter()
     test_caveat()
     if shared.failures:
         print("FAIL: %d check(s) failed: %s" % (len(shared.failures),
