@@ -140,7 +140,7 @@ int balancedRun
             structure.restore();
             structure.setPressureJump(dp);
             const vectorField before(stabiliser.balancingForces());
-            structure.setNodalForces(before);
+            structure.setNodalForces("addedMassBalance", before);
             advanceOrDie(structure, dt);
             stabiliser.update(structure, dt);
             const vectorField after(stabiliser.balancingForces());
@@ -256,7 +256,10 @@ int main(int argc, char *argv[])
         {
             structure.restore();
             structure.setPressureJump(noJump);
-            structure.setNodalForces(stabiliser.balancingForces());
+            structure.setNodalForces
+            (
+                "addedMassBalance", stabiliser.balancingForces()
+            );
             label subSteps = 0;
             if (!structure.tryAdvance(dt, subSteps, failure))
             {

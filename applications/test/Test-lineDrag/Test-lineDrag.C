@@ -148,7 +148,15 @@ void checkLine
 
     // Nodal forces: the drag and its moment about the origin
     vectorField nodal(2, Zero);
-    drag.addNodalForces(nodal);
+    {
+        labelList nodes;
+        vectorField forces;
+        drag.nodalForces(nodes, forces);
+        forAll(nodes, i)
+        {
+            nodal[nodes[i]] += forces[i];
+        }
+    }
     check("|sum of nodal forces - drag|/scale", mag(sum(nodal) - total)/scale, tol);
     const vector moment = (a ^ nodal[0]) + (b ^ nodal[1]);
     // The moment of the sample forces: their points, as placed

@@ -179,17 +179,34 @@ void Foam::addedMassStabiliser::setBalanceAcceleration
 }
 
 
-void Foam::addedMassStabiliser::restart
-(
-    const dictionary& state,
-    const word& entry,
-    const vectorField& balance
-)
+void Foam::addedMassStabiliser::writeState(dictionary& state) const
 {
+    if (active())
+    {
+        state.add("addedMassBalance", balanceAcceleration_);
+    }
+}
+
+
+void Foam::addedMassStabiliser::readState(const dictionary& state)
+{
+    if (!active())
+    {
+        return;
+    }
+    if (!state.found("addedMassBalance"))
+    {
+        WarningInFunction
+            << "No entry 'addedMassBalance' in " << state.name()
+            << ": the added-mass stabiliser's first balance after the"
+            << " restart is zero" << endl;
+        return;
+    }
+    const vectorField balance(state.get<vectorField>("addedMassBalance"));
     if (balance.size() != balanceAcceleration_.size())
     {
         FatalIOErrorInFunction(state)
-            << "Entry '" << entry << "' holds " << balance.size()
+            << "Entry 'addedMassBalance' holds " << balance.size()
             << " accelerations, but the stabiliser acts on "
             << balanceAcceleration_.size() << " nodes (was coupling.addedMass"
             << " or the structure changed since it was written?)"

@@ -1,11 +1,9 @@
 /*---------------------------------------------------------------------------*\
-    canopyFoam: canopyCoupling.C — immersed-boundary coupling of the flow
-    with the libcanopy structure.
+    canopyFoam: canopyCoupling.C — the fluid–structure iteration of a time
+    step: begin, correct, end.
 \*---------------------------------------------------------------------------*/
 
 #include "canopyCoupling.H"
-#include "surfaceInterpolate.H"
-#include "addedMassStabiliser.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -16,14 +14,8 @@ namespace
 // stops naming its new place and how to write it there
 void rejectMovedEntries(const Foam::scopedEntryReader& coupling)
 {
-    static const struct
-    {
-        const char* key;        // the entry in the coupling dictionary
-        const char* section;    // the sub-dictionary it moved to
-        const char* newKey;     // its name there
-        const char* with;       // what the example writes before it
-    } moved[] =
-    {
+    coupling.rejectMovedInto
+    ({
         {"kernel", "forcing", "kernel", ""},
         {"markerSpacing", "forcing", "markerSpacing", ""},
         {"forcingIterations", "forcing", "iterations", ""},
@@ -40,154 +32,34 @@ void rejectMovedEntries(const Foam::scopedEntryReader& coupling)
         {"addedMassPredictor", "addedMass", "predictor", "mass ..; "},
         {"addedMassBalance", "addedMass", "balance", "mass ..; "},
         {"addedMassDirection", "addedMass", "direction", "mass ..; "},
-    };
-    for (const auto& m : moved)
-    {
-        // acceleration and addedMass are sub-dictionaries now: only a
-        // value in their place has moved
-        if (coupling.found(m.key) && !coupling.dict().isDict(m.key))
-        {
-            coupling.rejectMoved
-            (
-                m.key,
-                coupling.name(m.section) + '.' + m.newKey,
-                std::string(m.section) + " { " + m.with + m.newKey + ' '
-              + coupling.given(m.key) + "; }"
-            );
-        }
-    }
+    });
 }
-
-
-// The components of vector fields one after another: the secondary data
-// of the interface acceleration (interfaceAcceleration.H)
-Foam::scalarField packVectors
-(
-    const Foam::vectorField& a,
-    const Foam::vectorField& b
-)
-{
-    Foam::scalarField s(3*(a.size() + b.size()));
-    Foam::label i = 0;
-    for (const Foam::vectorField* f : {&a, &b})
-    {
-        for (const Foam::vector& v : *f)
-        {
-            for (Foam::direction d = 0; d < 3; ++d)
-            {
-                s[i++] = v[d];
-            }
-        }
-    }
-    return s;
-}
-
-
-// The inverse of packVectors (a and b keep their sizes)
-void unpackVectors
-(
-    const Foam::scalarField& s,
-    Foam::vectorField& a,
-    Foam::vectorField& b
-)
-{
-    Foam::label i = 0;
-    for (Foam::vectorField* f : {&a, &b})
-    {
-        for (Foam::vector& v : *f)
-        {
-            for (Foam::direction d = 0; d < 3; ++d)
-            {
-                v[d] = s[i++];
-            }
-        }
-    }
-}
-
 
 } // End anonymous namespace
 
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-Foam::string Foam::canopyCoupling::updateStencils()
+Foam::string Foam::canopyCoupling::placeMarkers()
 {
+    // A trial structure state at t + dt is seen from the frame's origin at
+    // t + dt (canopyFrame::originAt)
     sectionTimer timer(ibSeconds_);
+    ib_->place(structure_.model(), frame_->originAt(structure_.time()));
     return ib_->updateStencils();
 }
 
 
-void Foam::canopyCoupling::spreadForce()
+void Foam::canopyCoupling::returnToStepStart()
 {
-    sectionTimer timer(ibSeconds_);
-    vectorField f(mesh_.nCells(), Zero);
-    ib_->spread(f);
-    if (lineDrag_.valid())
-    {
-        lineDrag_->spreadReaction(f, rho_);
-    }
-    force_.primitiveFieldRef() = f;
-    force_.correctBoundaryConditions();
-    faceForce_.clear();
-}
-
-
-void Foam::canopyCoupling::readCouplingState(const IOdictionary& state)
-{
-    ib_->readState(state);
-    if (lineDrag_.valid())
-    {
-        const vectorField L
-        (
-            state.getOrDefault<vectorField>("lineDragForce", vectorField())
-        );
-        if (L.size() != lineDrag_->size())
-        {
-            FatalIOErrorInFunction(state)
-                << "Entry 'lineDragForce' holds " << L.size() << " forces,"
-                << " but the lines have " << lineDrag_->size() << " sample"
-                << " points (was coupling.lineDrag added or changed since it"
-                << " was written?)" << exit(FatalIOError);
-        }
-        lineDrag_->setForces(L);
-    }
-    frame_->readState(state);
-    if (addedMass_->active())
-    {
-        if (state.found("addedMassBalance"))
-        {
-            addedMass_->restart
-            (
-                state, "addedMassBalance",
-                state.get<vectorField>("addedMassBalance")
-            );
-        }
-        else
-        {
-            WarningInFunction
-                << "No entry 'addedMassBalance' in " << state.objectPath()
-                << ": the added-mass stabiliser's first balance after the"
-                << " restart is zero" << endl;
-        }
-    }
-    acceleration_->readState(state);
-    state.readIfPresent("runStartTime", runStartTime_);
-}
-
-
-void Foam::canopyCoupling::addCouplingState(dictionary& state) const
-{
-    ib_->writeState(state);
-    frame_->writeState(state);
-    if (lineDrag_.valid())
-    {
-        state.add("lineDragForce", lineDrag_->forces());
-    }
-    if (addedMass_->active())
-    {
-        state.add("addedMassBalance", addedMass_->balanceAcceleration());
-    }
-    acceleration_->writeState(state);
-    state.add("runStartTime", runStartTime_);
+    // A failed step: every part back to the step's start (the last good
+    // state written next is then the state the step started from)
+    addedMass_->returnToStepStart();
+    acceleration_->discardStep();
+    structure_.restore();
+    placeMarkers();
+    ib_->returnToStepStart();
+    force_->spread();
 }
 
 
@@ -209,39 +81,33 @@ Foam::scalar Foam::canopyCoupling::residualNorm
 }
 
 
-void Foam::canopyCoupling::placeMarkers()
+void Foam::canopyCoupling::setNodalForces(const vectorField& tangential)
 {
-    // A trial structure state at t + dt is seen from the frame's origin at
-    // t + dt (canopyFrame::originAt)
-    ib_->place(structure_.model(), frame_->originAt(structure_.time()));
-}
-
-
-void Foam::canopyCoupling::returnToStepStart()
-{
-    // A failed step: every part back to the step's start (the last good
-    // state written next is then the state the step started from)
-    addedMass_->returnToStepStart();
-    acceleration_->discardStep();
-    structure_.restore();
-    placeMarkers();
-    updateStencils();
-    ib_->returnToStepStart();
-    spreadForce();
-}
-
-
-void Foam::canopyCoupling::writeSeries()
-{
-    couplingOutput::stepSummary step;
-    step.load = pressureForce_;
-    step.iterations = iteration_;
-    step.residual = residual_;
-    step.slip = slip_;
-    step.subSteps = subSteps_;
-    step.frameOrigin = frame_->origin();
-    step.lineDrag = lineDrag_.valid() ? lineDrag_->total() : vector::zero;
-    output_->writeSeries(step);
+    if (addedMass_->active())
+    {
+        structure_.setNodalForces
+        (
+            "addedMassBalance", addedMass_->balancingForces()
+        );
+    }
+    if (load_->tangential())
+    {
+        structure_.setNodalForces("tangentialLoad", tangential);
+    }
+    if (lineDrag_.valid())
+    {
+        // From the air's current velocity and the lines at the step's
+        // start (the sample points were placed there)
+        lineDrag_->compute
+        (
+            mesh_.lookupObject<volVectorField>(UName_), structure_.model(),
+            frame_->velocity(), rho_
+        );
+        labelList nodes;
+        vectorField forces;
+        lineDrag_->nodalForces(nodes, forces);
+        structure_.setNodalForces("lineDrag", nodes, forces);
+    }
 }
 
 
@@ -258,44 +124,13 @@ Foam::wordList Foam::canopyCoupling::validKeys()
 }
 
 
-Foam::canopyCoupling::canopyCoupling
-(
-    const fvMesh& mesh
-)
+Foam::canopyCoupling::canopyCoupling(const fvMesh& mesh)
 :
     mesh_(mesh),
     structure_(mesh.time()),
-    scheme_(scheme::strong),
-    rho_(1.2),
-    tolerance_(1e-3),
-    Uref_(1),
-    rmsResidual_(false),
-    acceleration_(),
-    lineDrag_(),
-    UName_("U"),
-    force_
-    (
-        IOobject
-        (
-            "canopyForce",
-            mesh.time().timeName(),
-            mesh,
-            IOobject::NO_READ,
-            IOobject::AUTO_WRITE
-        ),
-        mesh,
-        dimensionedVector(dimVelocity/dimTime, Zero)
-    ),
-    iteration_(0),
+    step_{Zero, 0, 0, 0, 0, Zero, Zero},
     structureSolves_(0),
-    residual_(0),
     converged_(false),
-    subSteps_(0),
-    pressureForce_(Zero),
-    slip_(0),
-    stopIfNotConverged_(true),
-    restartFluid_(false),
-    failure_(),
     runStartTime_(mesh.time().startTime().value()),
     structureSeconds_(0),
     ibSeconds_(0)
@@ -313,14 +148,11 @@ Foam::canopyCoupling::canopyCoupling
     rejectMovedEntries(coupling);
     coupling.rejectUnknown(validKeys());
 
-    scheme_ =
+    strong_ =
         coupling.choice
         (
             "scheme", {"strong", "explicit"}, "coupling scheme", "strong"
-        )
-     == "strong"
-      ? scheme::strong
-      : scheme::explicitScheme;
+        ) == "strong";
     rho_ = coupling.positive("rho", "fluid density [kg/m^3]", 1.2);
     tolerance_ = coupling.positive("tolerance", "coupling tolerance", 1e-3);
     Uref_ = coupling.positive("Uref", "velocity scale [m/s]", 1);
@@ -328,8 +160,7 @@ Foam::canopyCoupling::canopyCoupling
         coupling.choice
         (
             "residualNorm", {"max", "rms"}, "residual norm", "max"
-        )
-     == "rms";
+        ) == "rms";
     stopIfNotConverged_ = coupling.flag("stopIfNotConverged", true);
     restartFluid_ = coupling.flag("restartFluid", false);
     UName_ = coupling.wordValue("U", "velocity field name", "U");
@@ -393,14 +224,21 @@ Foam::canopyCoupling::canopyCoupling
             )
         );
     }
+    force_.reset
+    (
+        new couplingForce
+        (
+            mesh, ib_(), lineDrag_.get(), frame_(), rho_, ibSeconds_
+        )
+    );
 
     // The IB force is carried by the markers; a restart reads it and the
-    // frame
+    // parts' states
     if (runTime.value() != 0)
     {
         if (state.valid())
         {
-            readCouplingState(state());
+            readState(state());
         }
         else
         {
@@ -411,7 +249,7 @@ Foam::canopyCoupling::canopyCoupling
         }
     }
     frame_->startAt(structure_.time());
-    placeMarkers();
+    const string problem(placeMarkers());
     if (lineDrag_.valid())
     {
         lineDrag_->place(structure_.model(), frame_->origin());
@@ -420,22 +258,19 @@ Foam::canopyCoupling::canopyCoupling
     // Interface velocity from the structure's initial state
     normalVelocity_ = frame_->normalVelocities(structure_);
     triangleVelocity_ = frame_->velocities(structure_);
-    const string problem(updateStencils());
     if (!problem.empty())
     {
         FatalErrorInFunction
             << "At the start: " << problem.c_str() << exit(FatalError);
     }
-
-    spreadForce();
+    force_->spread();
 
     Info<< "canopyCoupling: structure of " << structure_.nNodes()
         << " nodes, total mass " << structure_.totalMass() << " kg, canopy"
         << " area " << structure_.canopyArea() << " m^2, nominal diameter "
-        << output_->nominalDiameter()
-        << " m" << nl;
-    Info<< "canopyCoupling: "
-        << (scheme_ == scheme::strong ? "strong" : "explicit") << " coupling, ";
+        << output_->nominalDiameter() << " m" << nl
+        << "canopyCoupling: " << (strong_ ? "strong" : "explicit")
+        << " coupling, ";
     ib_->writeInfo(Info);
     if (lineDrag_.valid())
     {
@@ -457,7 +292,7 @@ void Foam::canopyCoupling::beginTimeStep(volVectorField& U)
         // the fictitious force changed with its acceleration
         normalVelocity_ = frame_->normalVelocities(structure_);
         triangleVelocity_ = frame_->velocities(structure_);
-        faceForce_.clear();
+        force_->frameChanged();
     }
     beginTimeStep();
 }
@@ -471,68 +306,31 @@ void Foam::canopyCoupling::beginTimeStep()
     addedMass_->beginStep(structure_);
     ib_->beginStep();
     acceleration_->reset();
-    iteration_ = 0;
+    step_.iterations = 0;
     structureSolves_ = 0;
     converged_ = false;
-    residual_ = 0;
+    step_.residual = 0;
 }
 
 
 void Foam::canopyCoupling::forcingIncrement(const volVectorField& U)
 {
-    sectionTimer timer(ibSeconds_);
-    slip_ = ib_->forcingIncrement
-    (
-        U, normalVelocity_, triangleVelocity_, Uref_, force_
-    );
-    force_.correctBoundaryConditions();
-    faceForce_.clear();
-}
-
-
-const Foam::surfaceScalarField& Foam::canopyCoupling::faceForce() const
-{
-    if (!faceForce_.valid())
-    {
-        sectionTimer timer(ibSeconds_);
-        faceForce_.reset
-        (
-            new surfaceScalarField
-            (
-                "canopyFaceForce",
-                (
-                    fvc::interpolate(force_)
-                  - dimensionedVector
-                    (
-                        "A", force_.dimensions(), frame_->acceleration()
-                    )
-                ) & mesh_.Sf()
-            )
-        );
-
-        // The air entering where the frame sets the far field already
-        // moves with the frame: no flux of the fictitious force there
-        // (else a spurious pressure gradient builds up across the box,
-        // which the pressure sampling at x +- delta n would read as a jump
-        // of rho A 2 delta)
-        frame_->zeroFictitiousFlux(faceForce_->boundaryFieldRef());
-    }
-    return faceForce_();
+    step_.slip =
+        force_->forcingIncrement(U, normalVelocity_, triangleVelocity_, Uref_);
 }
 
 
 bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
 {
-    ++iteration_;
-    if (scheme_ == scheme::explicitScheme && structureSolves_ > 0)
+    ++step_.iterations;
+    if (!strong_ && structureSolves_ > 0)
     {
         return false;
     }
 
-    const canopyMarkers& mk = ib_->markers();
-
     // The load on the cloth (clothLoad): the pressure jump per marker,
     // then per triangle, and a tangential force per marker, to the nodes
+    const canopyMarkers& mk = ib_->markers();
     scalarField dpMarker;
     {
         sectionTimer timer(ibSeconds_);
@@ -542,7 +340,7 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
             p
         );
     }
-    pressureForce_ = sum(dpMarker*mk.areas()*mk.normals());
+    step_.load = sum(dpMarker*mk.areas()*mk.normals());
     vectorField tangentialNodal;
     if (load_->tangential())
     {
@@ -550,49 +348,29 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
         (
             load_->tangentialForces(mk, ib_->markerForces())
         );
-        pressureForce_ += sum(tangential);
+        step_.load += sum(tangential);
         tangentialNodal = mk.toNodes(tangential);
     }
 
     // The secondary part of the iterate this solve reads (besides the
     // normal velocity): the stabiliser's balancing acceleration and the
     // no-slip velocity the forcing used
-    const vectorField balanceUsed(addedMass_->balanceAcceleration());
-    const vectorField triangleVelocityUsed(triangleVelocity_);
+    vectorField balance(addedMass_->balanceAcceleration());
+    vectorField velocity(triangleVelocity_);
 
-    label substeps = 0;
+    // The structure's time step from its start under these loads
     string message;
     bool advanced = false;
     {
         sectionTimer timer(structureSeconds_);
         structure_.restore();
         structure_.setPressureJump(mk.triangleAverage(dpMarker));
-        if (addedMass_->active() || lineDrag_.valid() || load_->tangential())
-        {
-            vectorField nodal(structure_.nNodes(), Zero);
-            if (addedMass_->active())
-            {
-                nodal = addedMass_->balancingForces();
-            }
-            if (load_->tangential())
-            {
-                nodal += tangentialNodal;
-            }
-            if (lineDrag_.valid())
-            {
-                // From the air's current velocity and the lines at the
-                // step's start (the sample points were placed there)
-                lineDrag_->compute
-                (
-                    mesh_.lookupObject<volVectorField>(UName_),
-                    structure_.model(), frame_->velocity(), rho_
-                );
-                lineDrag_->addNodalForces(nodal);
-            }
-            structure_.setNodalForces(nodal);
-        }
+        setNodalForces(tangentialNodal);
         advanced =
-            structure_.tryAdvance(mesh_.time().deltaTValue(), substeps, message);
+            structure_.tryAdvance
+            (
+                mesh_.time().deltaTValue(), step_.subSteps, message
+            );
         if (advanced)
         {
             addedMass_->update(structure_, mesh_.time().deltaTValue());
@@ -602,44 +380,36 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
     {
         failure_ =
             "the structure's time step to t = " + mesh_.time().timeName()
-          + " failed (coupling iteration " + Foam::name(iteration_) + "): "
-          + message;
+          + " failed (coupling iteration " + Foam::name(step_.iterations)
+          + "): " + message;
         converged_ = true;
         return true;            // ends the outer loop
     }
-    subSteps_ = substeps;
     ++structureSolves_;
 
-    const scalarField target(frame_->normalVelocities(structure_));
-    triangleVelocity_ = frame_->velocities(structure_);
-    const label nt = target.size();
-
-    const scalar scale = max(Uref_, nt ? max(mag(target)) : 0);
-    bool stop = false;
     // This iteration's change of the interface velocity: its norm is the
     // residual; where it is largest goes to the log
+    const scalarField target(frame_->normalVelocities(structure_));
+    triangleVelocity_ = frame_->velocities(structure_);
+    const scalar scale = max(Uref_, target.size() ? max(mag(target)) : 0);
     const scalarField change(target - normalVelocity_);
-    residual_ = residualNorm(change)/scale;
+    step_.residual = residualNorm(change)/scale;
     const label worst = findMax(scalarField(mag(change)));
-    if (scheme_ == scheme::strong)
+    if (strong_)
     {
-        converged_ = residual_ < tolerance_;
-        stop = converged_;
-        // The stabiliser's balance and the no-slip velocity are the
-        // acceleration's secondary data (interfaceAcceleration.H: IQN-ILS
-        // moves them with its columns, Aitken hands them the last solve's);
-        // on convergence they are the last solve's, so the balance cancels
-        // as before
-        vectorField balance(addedMass_->balanceAcceleration());
-        scalarField secondary(packVectors(balanceUsed, triangleVelocityUsed));
+        // The next iterate; the stabiliser's balance and the no-slip
+        // velocity are the acceleration's secondary data (IQN-ILS moves
+        // them with its columns, Aitken hands them the last solve's); on
+        // convergence they stay the last solve's, so the balance cancels
+        converged_ = step_.residual < tolerance_;
         acceleration_->relax
         (
-            normalVelocity_, target,
-            secondary, packVectors(balance, triangleVelocity_)
+            normalVelocity_, target, balance, velocity,
+            addedMass_->balanceAcceleration(), triangleVelocity_
         );
-        if (!stop)
+        if (!converged_)
         {
-            unpackVectors(secondary, balance, triangleVelocity_);
+            triangleVelocity_ = velocity;
             addedMass_->setBalanceAcceleration(balance);
         }
     }
@@ -651,8 +421,7 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
         converged_ = true;
     }
 
-    placeMarkers();
-    const string problem(updateStencils());
+    const string problem(placeMarkers());
     if (!problem.empty())
     {
         failure_ = "at t = " + mesh_.time().timeName() + ", " + problem;
@@ -666,26 +435,25 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
     // step's IB force, so that the fluid's response is a function of the
     // interface velocity alone (not of the iteration history); the
     // markers' forces move with them
-    if (scheme_ == scheme::strong && !stop)
+    const bool stop = strong_ && converged_;
+    if (strong_ && !stop)
     {
         ib_->returnToStepStart();
     }
-    spreadForce();
+    force_->spread();
 
-    Info<< "canopyCoupling: iteration " << iteration_
-        << ", interface residual " << residual_;
+    Info<< "canopyCoupling: iteration " << step_.iterations
+        << ", interface residual " << step_.residual;
     if (worst >= 0)
     {
         Info<< " (largest at " << structure_.triangleCentres()()[worst]
             << ")";
     }
-    Info
-        << ", slip " << slip_
+    Info<< ", slip " << step_.slip
         << ", " << acceleration_->describe().c_str()
-        << ", structure sub-steps " << substeps
+        << ", structure sub-steps " << step_.subSteps
         << (load_->tangential() ? ", load on the cloth " : ", pressure force ")
-        << pressureForce_
-        << ", IB force " << rho_*ib_->totalForce();
+        << step_.load << ", IB force " << rho_*ib_->totalForce();
     if (lineDrag_.valid())
     {
         Info<< ", line drag " << lineDrag_->total();
@@ -698,12 +466,12 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
 
 bool Foam::canopyCoupling::endTimeStep()
 {
-    if (!failed() && scheme_ == scheme::strong && !converged_)
+    if (!failed() && strong_ && !converged_)
     {
         const string text =
             "the coupling did not converge at t = " + mesh_.time().timeName()
-          + " in " + Foam::name(iteration_) + " iterations (residual "
-          + Foam::name(residual_) + ", slip " + Foam::name(slip_)
+          + " in " + Foam::name(step_.iterations) + " iterations (residual "
+          + Foam::name(step_.residual) + ", slip " + Foam::name(step_.slip)
           + ", tolerance " + Foam::name(tolerance_) + ")";
         if (stopIfNotConverged_)
         {
@@ -714,14 +482,14 @@ bool Foam::canopyCoupling::endTimeStep()
             WarningInFunction << text.c_str() << endl;
         }
     }
+
     // The frame moves on with the step; the markers with it
     const bool frameMoved =
         !failed()
      && frame_->moveOn(mesh_.time().deltaTValue(), structure_.time());
     if (frameMoved)
     {
-        placeMarkers();
-        const string problem(updateStencils());
+        const string problem(placeMarkers());
         if (!problem.empty())
         {
             frame_->undoMove();
@@ -755,19 +523,51 @@ bool Foam::canopyCoupling::endTimeStep()
     if (frameMoved || lineDrag_.valid())
     {
         // The force from the markers' and the lines' new places
-        spreadForce();
+        force_->spread();
     }
 
     // The next step starts from the committed structure's interface
     // velocity (not the relaxed iterate), so that a restart, which knows
     // only the structure's state, continues exactly
     normalVelocity_ = frame_->normalVelocities(structure_);
-    writeSeries();
+    step_.frameOrigin = frame_->origin();
+    step_.lineDrag = lineDrag_.valid() ? lineDrag_->total() : vector::zero;
+    output_->writeSeries(step_);
     if (mesh_.time().writeTime())
     {
         writeStructure();
     }
     return true;
+}
+
+
+// * * * * * * * * * * * * * * * Restart state  * * * * * * * * * * * * * * //
+
+void Foam::canopyCoupling::readState(const IOdictionary& state)
+{
+    ib_->readState(state);
+    if (lineDrag_.valid())
+    {
+        lineDrag_->readState(state);
+    }
+    frame_->readState(state);
+    addedMass_->readState(state);
+    acceleration_->readState(state);
+    state.readIfPresent("runStartTime", runStartTime_);
+}
+
+
+void Foam::canopyCoupling::writeState(dictionary& state) const
+{
+    ib_->writeState(state);
+    frame_->writeState(state);
+    if (lineDrag_.valid())
+    {
+        lineDrag_->writeState(state);
+    }
+    addedMass_->writeState(state);
+    acceleration_->writeState(state);
+    state.add("runStartTime", runStartTime_);
 }
 
 
@@ -780,10 +580,13 @@ void Foam::canopyCoupling::writeStructure()
         output_->write
         (
             frame_->meshFrameOrigin(),
-            [this](dictionary& state) { addCouplingState(state); }
+            [this](dictionary& state) { writeState(state); }
         );
     }
     Info<< "canopyCoupling: wall time since the run started: structure "
         << structureSeconds_ << " s, immersed boundary " << ibSeconds_
         << " s (the rest of ClockTime is the fluid)" << endl;
 }
+
+
+// ************************************************************************* //

@@ -158,12 +158,20 @@ void Foam::lineDrag::compute
 }
 
 
-void Foam::lineDrag::addNodalForces(vectorField& nodal) const
+void Foam::lineDrag::nodalForces
+(
+    labelList& nodes,
+    vectorField& forces
+) const
 {
+    nodes.setSize(2*force_.size());
+    forces.setSize(2*force_.size());
     forAll(force_, k)
     {
-        nodal[node0_[k]] += (1 - fraction_[k])*force_[k];
-        nodal[node1_[k]] += fraction_[k]*force_[k];
+        nodes[2*k] = node0_[k];
+        forces[2*k] = (1 - fraction_[k])*force_[k];
+        nodes[2*k + 1] = node1_[k];
+        forces[2*k + 1] = fraction_[k]*force_[k];
     }
 }
 
@@ -188,4 +196,28 @@ void Foam::lineDrag::setForces(const vectorField& f)
             << " sample points" << abort(FatalError);
     }
     force_ = f;
+}
+
+
+void Foam::lineDrag::writeState(dictionary& state) const
+{
+    state.add("lineDragForce", force_);
+}
+
+
+void Foam::lineDrag::readState(const dictionary& state)
+{
+    const vectorField f
+    (
+        state.getOrDefault<vectorField>("lineDragForce", vectorField())
+    );
+    if (f.size() != size())
+    {
+        FatalIOErrorInFunction(state)
+            << "Entry 'lineDragForce' holds " << f.size() << " forces,"
+            << " but the lines have " << size() << " sample points (was"
+            << " coupling.lineDrag added or changed since it was written?)"
+            << exit(FatalIOError);
+    }
+    setForces(f);
 }

@@ -255,6 +255,27 @@ void Foam::scopedEntryReader::rejectMoved
 }
 
 
+void Foam::scopedEntryReader::rejectMovedInto
+(
+    std::initializer_list<movedEntry> moved
+) const
+{
+    for (const movedEntry& m : moved)
+    {
+        if (found(m.key) && !dict().isDict(m.key))
+        {
+            rejectMoved
+            (
+                m.key,
+                name(m.section) + '.' + m.newKey,
+                std::string(m.section) + " { " + m.with + m.newKey + ' '
+              + given(m.key) + "; }"
+            );
+        }
+    }
+}
+
+
 Foam::scalar Foam::scopedEntryReader::number
 (
     const word& key,
