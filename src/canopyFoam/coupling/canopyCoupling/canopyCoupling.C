@@ -177,26 +177,9 @@ Foam::canopyCoupling::canopyCoupling(const fvMesh& mesh)
     frame_ =
         canopyFrame::New(coupling.optionalSubReader("frame"), mesh, structure_);
 
-    // A restart continues from the structure's state at the start time
-    // (canopyStructure::startsFrom decides; the constructor has read an
-    // initial state otherwise)
+    // The files; on a restart the structure's state at the start time
+    // and the coupling's (null when there is none)
     const Time& runTime = mesh.time();
-    if (structure_.startsFrom(runTime) == canopyStructure::origin::restart)
-    {
-        Info<< "canopyCoupling: restarting the structure from its state"
-            << " at t = " << runTime.timeName() << " in "
-            << canopyStructure::outputPath(runTime) << ".h5" << endl;
-        structure_.readState(runTime);
-    }
-    else if (runTime.value() != 0)
-    {
-        WarningInFunction
-            << "No structure state at the start time " << runTime.timeName()
-            << " in " << canopyStructure::outputPath(runTime) << ".h5:"
-            << " the canopy starts from its initial shape" << endl;
-    }
-
-    // The files; a restart's coupling state (null when there is none)
     output_.reset(new couplingOutput(mesh, structure_, rho_));
     const autoPtr<IOdictionary> state(output_->readState());
 

@@ -66,15 +66,33 @@ Foam::couplingOutput::couplingOutput
     mesh_(mesh),
     structure_(structure),
     rho_(rho),
-    nominalDiameter_
-    (
+    nominalDiameter_(0)
+{
+    // A restart continues from the structure's state at the start time
+    // (canopyStructure::startsFrom decides; the structure's constructor
+    // has read an initial state otherwise)
+    const Time& runTime = mesh.time();
+    if (structure.startsFrom(runTime) == canopyStructure::origin::restart)
+    {
+        Info<< "canopyCoupling: restarting the structure from its state"
+            << " at t = " << runTime.timeName() << " in "
+            << canopyStructure::outputPath(runTime) << ".h5" << endl;
+        structure.readState(runTime);
+    }
+    else if (runTime.value() != 0)
+    {
+        WarningInFunction
+            << "No structure state at the start time " << runTime.timeName()
+            << " in " << canopyStructure::outputPath(runTime) << ".h5:"
+            << " the canopy starts from its initial shape" << endl;
+    }
+    nominalDiameter_ =
         structure.dict().subOrEmptyDict("canopy").getOrDefault<scalar>
         (
             "diameter",
             Foam::sqrt(4*structure.canopyArea()/constant::mathematical::pi)
-        )
-    )
-{}
+        );
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
