@@ -63,24 +63,6 @@ void Foam::canopyCoupling::returnToStepStart()
 }
 
 
-Foam::scalar Foam::canopyCoupling::residualNorm
-(
-    const scalarField& change
-) const
-{
-    if (change.empty())
-    {
-        return 0;
-    }
-    if (!rmsResidual_)
-    {
-        return max(mag(change));
-    }
-    const scalarField areas(structure_.triangleAreas());
-    return Foam::sqrt(sum(areas*sqr(change))/max(sum(areas), VSMALL));
-}
-
-
 void Foam::canopyCoupling::setNodalForces(const vectorField& tangential)
 {
     if (addedMass_->active())
@@ -154,9 +136,10 @@ Foam::canopyCoupling::canopyCoupling(const fvMesh& mesh)
             "scheme", {"strong", "explicit"}, "coupling scheme", "strong"
         ) == "strong";
     rho_ = coupling.positive("rho", "fluid density [kg/m^3]", 1.2);
-    tolerance_ = coupling.positive("tolerance", "coupling tolerance", 1e-3);
-    Uref_ = coupling.positive("Uref", "velocity scale [m/s]", 1);
-    rmsResidual_ =
+    const scalar tolerance =
+        coupling.positive("tolerance", "coupling tolerance", 1e-3);
+    const scalar Uref = coupling.positive("Uref", "velocity scale [m/s]", 1);
+    const bool rms =
         coupling.choice
         (
             "residualNorm", {"max", "rms"}, "residual norm", "max"
@@ -176,6 +159,10 @@ Foam::canopyCoupling::canopyCoupling(const fvMesh& mesh)
         interfaceAcceleration::New(coupling.optionalSubReader("acceleration"));
     frame_ =
         canopyFrame::New(coupling.optionalSubReader("frame"), mesh, structure_);
+    iterate_.reset
+    (
+        new interfaceIterate(structure_, frame_(), tolerance, Uref, rms)
+    );
 
     // The files; on a restart the structure's state at the start time
     // and the coupling's (null when there is none)
@@ -239,8 +226,7 @@ Foam::canopyCoupling::canopyCoupling(const fvMesh& mesh)
     }
 
     // Interface velocity from the structure's initial state
-    normalVelocity_ = frame_->normalVelocities(structure_);
-    triangleVelocity_ = frame_->velocities(structure_);
+    iterate_->fromStructure();
     if (!problem.empty())
     {
         FatalErrorInFunction
@@ -273,8 +259,7 @@ void Foam::canopyCoupling::beginTimeStep(volVectorField& U)
     {
         // The interface velocities relative to the frame's new velocity;
         // the fictitious force changed with its acceleration
-        normalVelocity_ = frame_->normalVelocities(structure_);
-        triangleVelocity_ = frame_->velocities(structure_);
+        iterate_->fromStructure();
         force_->frameChanged();
     }
     beginTimeStep();
@@ -299,7 +284,11 @@ void Foam::canopyCoupling::beginTimeStep()
 void Foam::canopyCoupling::forcingIncrement(const volVectorField& U)
 {
     step_.slip =
-        force_->forcingIncrement(U, normalVelocity_, triangleVelocity_, Uref_);
+        force_->forcingIncrement
+        (
+            U, iterate_->normalVelocity(), iterate_->velocity(),
+            iterate_->Uref()
+        );
 }
 
 
@@ -336,10 +325,8 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
     }
 
     // The secondary part of the iterate this solve reads (besides the
-    // normal velocity): the stabiliser's balancing acceleration and the
-    // no-slip velocity the forcing used
-    vectorField balance(addedMass_->balanceAcceleration());
-    vectorField velocity(triangleVelocity_);
+    // normal velocity): the stabiliser's balance and the no-slip velocity
+    iterate_->hold(addedMass_());
 
     // The structure's time step from its start under these loads
     string message;
@@ -370,39 +357,9 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
     }
     ++structureSolves_;
 
-    // This iteration's change of the interface velocity: its norm is the
-    // residual; where it is largest goes to the log
-    const scalarField target(frame_->normalVelocities(structure_));
-    triangleVelocity_ = frame_->velocities(structure_);
-    const scalar scale = max(Uref_, target.size() ? max(mag(target)) : 0);
-    const scalarField change(target - normalVelocity_);
-    step_.residual = residualNorm(change)/scale;
-    const label worst = findMax(scalarField(mag(change)));
-    if (strong_)
-    {
-        // The next iterate; the stabiliser's balance and the no-slip
-        // velocity are the acceleration's secondary data (IQN-ILS moves
-        // them with its columns, Aitken hands them the last solve's); on
-        // convergence they stay the last solve's, so the balance cancels
-        converged_ = step_.residual < tolerance_;
-        acceleration_->relax
-        (
-            normalVelocity_, target, balance, velocity,
-            addedMass_->balanceAcceleration(), triangleVelocity_
-        );
-        if (!converged_)
-        {
-            triangleVelocity_ = velocity;
-            addedMass_->setBalanceAcceleration(balance);
-        }
-    }
-    else
-    {
-        // Explicit: one structure solve per step; the PIMPLE outer loop
-        // runs its own course
-        normalVelocity_ = target;
-        converged_ = true;
-    }
+    // The residual, the convergence decision and the next iterate
+    converged_ = iterate_->update(strong_, acceleration_(), addedMass_());
+    step_.residual = iterate_->residual();
 
     const string problem(placeMarkers());
     if (!problem.empty())
@@ -425,23 +382,14 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
     }
     force_->spread();
 
-    Info<< "canopyCoupling: iteration " << step_.iterations
-        << ", interface residual " << step_.residual;
-    if (worst >= 0)
-    {
-        Info<< " (largest at " << structure_.triangleCentres()()[worst]
-            << ")";
-    }
-    Info<< ", slip " << step_.slip
-        << ", " << acceleration_->describe().c_str()
-        << ", structure sub-steps " << step_.subSteps
-        << (load_->tangential() ? ", load on the cloth " : ", pressure force ")
-        << step_.load << ", IB force " << rho_*ib_->totalForce();
-    if (lineDrag_.valid())
-    {
-        Info<< ", line drag " << lineDrag_->total();
-    }
-    Info<< endl;
+    // The iteration's line in the log
+    const vector drag(lineDrag_.valid() ? lineDrag_->total() : vector::zero);
+    output_->logIteration
+    (
+        step_, iterate_->worst(), acceleration_->describe(),
+        load_->tangential(), rho_*ib_->totalForce(),
+        lineDrag_.valid() ? &drag : nullptr
+    );
 
     return stop;
 }
@@ -451,11 +399,7 @@ bool Foam::canopyCoupling::endTimeStep()
 {
     if (!failed() && strong_ && !converged_)
     {
-        const string text =
-            "the coupling did not converge at t = " + mesh_.time().timeName()
-          + " in " + Foam::name(step_.iterations) + " iterations (residual "
-          + Foam::name(step_.residual) + ", slip " + Foam::name(step_.slip)
-          + ", tolerance " + Foam::name(tolerance_) + ")";
+        const string text(output_->notConverged(step_, iterate_->tolerance()));
         if (stopIfNotConverged_)
         {
             failure_ = text;
@@ -512,7 +456,7 @@ bool Foam::canopyCoupling::endTimeStep()
     // The next step starts from the committed structure's interface
     // velocity (not the relaxed iterate), so that a restart, which knows
     // only the structure's state, continues exactly
-    normalVelocity_ = frame_->normalVelocities(structure_);
+    iterate_->normalFromStructure();
     step_.frameOrigin = frame_->origin();
     step_.lineDrag = lineDrag_.valid() ? lineDrag_->total() : vector::zero;
     output_->writeSeries(step_);

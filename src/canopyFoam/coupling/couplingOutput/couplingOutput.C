@@ -1,6 +1,6 @@
 /*---------------------------------------------------------------------------*\
     canopyFoam: couplingOutput.C — the canopy's time series, the structure's
-    output steps and the coupling's restart state.
+    output steps, the coupling's restart state and the iteration's log.
 \*---------------------------------------------------------------------------*/
 
 #include "couplingOutput.H"
@@ -182,6 +182,50 @@ void Foam::couplingOutput::writeSeries(const stepSummary& step)
         << ' ' << l.x() << ' ' << l.y() << ' ' << l.z()
         << ' ' << centre.x() << ' ' << centre.y() << ' ' << centre.z()
         << endl;
+}
+
+
+void Foam::couplingOutput::logIteration
+(
+    const stepSummary& step,
+    const label worst,
+    const string& acceleration,
+    const bool tangentialLoad,
+    const vector& ibForce,
+    const vector* lineDrag
+) const
+{
+    Info<< "canopyCoupling: iteration " << step.iterations
+        << ", interface residual " << step.residual;
+    if (worst >= 0)
+    {
+        Info<< " (largest at " << structure_.triangleCentres()()[worst]
+            << ")";
+    }
+    Info<< ", slip " << step.slip
+        << ", " << acceleration.c_str()
+        << ", structure sub-steps " << step.subSteps
+        << (tangentialLoad ? ", load on the cloth " : ", pressure force ")
+        << step.load << ", IB force " << ibForce;
+    if (lineDrag)
+    {
+        Info<< ", line drag " << *lineDrag;
+    }
+    Info<< endl;
+}
+
+
+Foam::string Foam::couplingOutput::notConverged
+(
+    const stepSummary& step,
+    const scalar tolerance
+) const
+{
+    return
+        "the coupling did not converge at t = " + mesh_.time().timeName()
+      + " in " + Foam::name(step.iterations) + " iterations (residual "
+      + Foam::name(step.residual) + ", slip " + Foam::name(step.slip)
+      + ", tolerance " + Foam::name(tolerance) + ")";
 }
 
 
