@@ -15,8 +15,8 @@ Application
 
 Description
     Builds the structure of constant/canopyProperties and its
-    addedMassStabiliser (the entries coupling.addedMass, > 0, and
-    coupling.addedMassPredictor) and advances it as the strong coupling
+    addedMassStabiliser (the sub-dictionary coupling.addedMass, mass > 0)
+    and advances it as the strong coupling
     does, with no air: every time step a fixed number of iterations, each
     restoring the step's start, setting the balancing forces m_a (d.abar) d
     and advancing; no pressure jump. This is a cloth node inside a fold,
@@ -51,7 +51,7 @@ Description
         (at most 2000 iterations), beside a second structure built from the
         same dictionary without the stabiliser and given the same loads.
         The balance's fixed point is the structure's equation without the
-        added mass (with coupling.addedMassBalance endOfStep and an
+        added mass (with coupling.addedMass.balance endOfStep and an
         implicit integrator), so the two must move alike: passes when the
         largest position difference at the end is at most 1e-6 of the
         largest displacement (the iteration's remaining error, ~1e-9 of the
@@ -140,7 +140,7 @@ int balancedRun
             structure.restore();
             structure.setPressureJump(dp);
             const vectorField before(stabiliser.balancingForces());
-            structure.setNodalForces(before);
+            structure.setNodalForces("addedMassBalance", before);
             advanceOrDie(structure, dt);
             stabiliser.update(structure, dt);
             const vectorField after(stabiliser.balancingForces());
@@ -215,11 +215,16 @@ int main(int argc, char *argv[])
     );
     canopyStructure structure(runTime);
     structure.setTime(0);
-    addedMassStabiliser stabiliser(props.subDict("coupling"), structure);
+    const scopedEntryReader addedMass
+    (
+        scopedEntryReader(props, "")
+       .optionalSubReader("coupling").optionalSubReader("addedMass")
+    );
+    addedMassStabiliser stabiliser(addedMass, structure);
     if (!stabiliser.active())
     {
         FatalIOErrorInFunction(props)
-            << "Entry 'coupling.addedMass' must be > 0 for this test"
+            << "Entry 'coupling.addedMass.mass' must be > 0 for this test"
             << exit(FatalIOError);
     }
     if (expect == "balanced")
@@ -233,8 +238,7 @@ int main(int argc, char *argv[])
 
     Info<< "Canopy without air: " << structure.nNodes() << " nodes, "
         << "total mass " << structure.totalMass() << " kg; predictor "
-        << props.subDict("coupling").getOrDefault<word>
-           ("addedMassPredictor", "zero")
+        << addedMass.wordValue("predictor", "predictor", "lastStep").c_str()
         << ", " << nIterations << " iterations per step, dt " << dt
         << " s, " << nSteps << " steps" << nl << nl
         << "        t [s]      E - E0 [J]      KE [J]   fastest node [m/s]"
@@ -252,7 +256,10 @@ int main(int argc, char *argv[])
         {
             structure.restore();
             structure.setPressureJump(noJump);
-            structure.setNodalForces(stabiliser.balancingForces());
+            structure.setNodalForces
+            (
+                "addedMassBalance", stabiliser.balancingForces()
+            );
             label subSteps = 0;
             if (!structure.tryAdvance(dt, subSteps, failure))
             {

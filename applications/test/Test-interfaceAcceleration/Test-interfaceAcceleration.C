@@ -36,7 +36,8 @@ Description
     Exit status 0 only when every check passes.
 
     With -select TEXT it only selects an acceleration from TEXT, the body
-    of a coupling dictionary (e.g. "acceleration IQN-ILS; reuse 4;"),
+    of a coupling's acceleration sub-dictionary (e.g. "type IQN-ILS;
+    reuse 4;"),
     prints what it selected and exits: a bad entry stops with the
     FatalIOError naming it (checked by tests/openfoam/interfaceAcceleration).
 
@@ -172,14 +173,21 @@ int main(int argc, char *argv[])
     (
         "select",
         "TEXT",
-        "only select an acceleration from a coupling dictionary's body"
+        "only select an acceleration from the body of a coupling"
+        " acceleration sub-dictionary"
     );
     argList args(argc, argv, false, false);
 
     if (args.found("select"))
     {
-        const dictionary coupling(IStringStream(args.get<string>("select"))());
-        autoPtr<interfaceAcceleration> acc(interfaceAcceleration::New(coupling));
+        const dictionary dict(IStringStream(args.get<string>("select"))());
+        autoPtr<interfaceAcceleration> acc
+        (
+            interfaceAcceleration::New
+            (
+                scopedEntryReader(dict, "coupling.acceleration")
+            )
+        );
         Info<< "selected: " << acc->describe().c_str() << endl;
         return 0;
     }

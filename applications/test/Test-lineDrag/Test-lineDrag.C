@@ -127,7 +127,12 @@ void checkLine
 {
     Info<< name.c_str() << nl;
     oneLine line(a, b, v);
-    lineDrag drag(dragDict(spacing), mesh, kernel, line.model, 1);
+    const dictionary dict(dragDict(spacing));
+    lineDrag drag
+    (
+        scopedEntryReader(dict, "coupling.lineDrag"), mesh, kernel,
+        line.model, 1
+    );
     drag.place(line.model, Zero);
     drag.compute(U, line.model, V, rho);
     const vector total = drag.total();
@@ -143,7 +148,15 @@ void checkLine
 
     // Nodal forces: the drag and its moment about the origin
     vectorField nodal(2, Zero);
-    drag.addNodalForces(nodal);
+    {
+        labelList nodes;
+        vectorField forces;
+        drag.nodalForces(nodes, forces);
+        forAll(nodes, i)
+        {
+            nodal[nodes[i]] += forces[i];
+        }
+    }
     check("|sum of nodal forces - drag|/scale", mag(sum(nodal) - total)/scale, tol);
     const vector moment = (a ^ nodal[0]) + (b ^ nodal[1]);
     // The moment of the sample forces: their points, as placed
@@ -186,7 +199,11 @@ void expectBadEntry
     string message("no error");
     try
     {
-        lineDrag drag(dict, mesh, kernel, model, 0.1);
+        lineDrag drag
+        (
+            scopedEntryReader(dict, "coupling.lineDrag"), mesh, kernel,
+            model, 0.1
+        );
     }
     catch (const Foam::IOerror& err)
     {
@@ -349,6 +366,13 @@ int main(int argc, char *argv[])
         (
             "Cf -0.01", negativeCf, mesh, kernel(), line.model,
             "coupling.lineDrag.Cf"
+        );
+        dictionary unknownEntry(dragDict(0.1));
+        unknownEntry.add("Cdd", 1.0);
+        expectBadEntry
+        (
+            "unknown Cdd", unknownEntry, mesh, kernel(), line.model,
+            "coupling.lineDrag.Cdd"
         );
         dictionary zeroSpacing(dragDict(0.1));
         zeroSpacing.set("spacing", 0.0);

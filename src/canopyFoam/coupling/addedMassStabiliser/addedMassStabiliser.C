@@ -5,14 +5,18 @@
 
 #include "addedMassStabiliser.H"
 #include "canopyStructure.H"
-#include "readChoice.H"
-#include "readEntry.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
+Foam::wordList Foam::addedMassStabiliser::validKeys()
+{
+    return {"mass", "predictor", "balance", "direction"};
+}
+
+
 Foam::addedMassStabiliser::addedMassStabiliser
 (
-    const dictionary& couplingDict,
+    const scopedEntryReader& addedMass,
     const canopyStructure& structure
 )
 :
@@ -25,45 +29,41 @@ Foam::addedMassStabiliser::addedMassStabiliser
     endOfStep_(false),
     isotropic_(false)
 {
-    const scalar density = canopyEntry::number
-    (
-        couplingDict, "addedMass", "coupling.addedMass", 0
-    );
-    if (!(density >= 0))
-    {
-        FatalIOErrorInFunction(couplingDict)
-            << "Entry 'coupling.addedMass' = " << density
-            << " must be >= 0 [kg/m^2]" << exit(FatalIOError);
-    }
+    addedMass.rejectUnknown(validKeys());
+
+    // An absent sub-dictionary: off (any entry makes mass required)
+    const scalar density =
+        addedMass.dict().empty()
+      ? 0
+      : addedMass.nonNegative("mass", "added mass per area [kg/m^2]");
     fromLastStep_ =
-        readChoice
+        addedMass.choice
         (
-            couplingDict, "addedMassPredictor", "coupling.addedMassPredictor",
-            {"lastStep", "zero"}
+            "predictor", {"lastStep", "zero"}, "predictor", "lastStep"
         )
      == "lastStep";
     endOfStep_ =
-        readChoice
+        addedMass.choice
         (
-            couplingDict, "addedMassBalance", "coupling.addedMassBalance",
-            {"stepMean", "endOfStep"}
+            "balance", {"stepMean", "endOfStep"}, "balance", "stepMean"
         )
      == "endOfStep";
     isotropic_ =
-        readChoice
+        addedMass.choice
         (
-            couplingDict, "addedMassDirection", "coupling.addedMassDirection",
-            {"normal", "all"}
+            "direction", {"normal", "all"}, "direction", "normal"
         )
      == "all";
     const word integrator(structure.integrator());
     if (endOfStep_ && integrator != "hht" && integrator != "newmark")
     {
-        FatalIOErrorInFunction(couplingDict)
-            << "Entry 'coupling.addedMassBalance' = endOfStep needs the "
-            << "structure's integrator.type hht or newmark (an implicit "
-            << "integrator, which keeps the acceleration it ends a step "
-            << "with), not " << integrator << exit(FatalIOError);
+        addedMass.fail
+        (
+            "balance",
+            "= endOfStep needs the structure's integrator.type hht or"
+            " newmark (an implicit integrator, which keeps the acceleration"
+            " it ends a step with), not " + integrator
+        );
     }
     if (density == 0)
     {
@@ -103,7 +103,7 @@ void Foam::addedMassStabiliser::beginStep(canopyStructure& structure)
 
     // The added mass acts along the nodes' normals at the step's start
     // (area-weighted over the adjacent triangles), or with
-    // addedMassDirection all in every direction (a zero direction)
+    // direction all in every direction (a zero direction)
     direction_ = Zero;
     if (isotropic_)
     {
@@ -179,17 +179,34 @@ void Foam::addedMassStabiliser::setBalanceAcceleration
 }
 
 
-void Foam::addedMassStabiliser::restart
-(
-    const dictionary& state,
-    const word& entry,
-    const vectorField& balance
-)
+void Foam::addedMassStabiliser::writeState(dictionary& state) const
 {
+    if (active())
+    {
+        state.add("addedMassBalance", balanceAcceleration_);
+    }
+}
+
+
+void Foam::addedMassStabiliser::readState(const dictionary& state)
+{
+    if (!active())
+    {
+        return;
+    }
+    if (!state.found("addedMassBalance"))
+    {
+        WarningInFunction
+            << "No entry 'addedMassBalance' in " << state.name()
+            << ": the added-mass stabiliser's first balance after the"
+            << " restart is zero" << endl;
+        return;
+    }
+    const vectorField balance(state.get<vectorField>("addedMassBalance"));
     if (balance.size() != balanceAcceleration_.size())
     {
         FatalIOErrorInFunction(state)
-            << "Entry '" << entry << "' holds " << balance.size()
+            << "Entry 'addedMassBalance' holds " << balance.size()
             << " accelerations, but the stabiliser acts on "
             << balanceAcceleration_.size() << " nodes (was coupling.addedMass"
             << " or the structure changed since it was written?)"

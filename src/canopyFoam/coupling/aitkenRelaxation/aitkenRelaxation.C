@@ -4,7 +4,6 @@
 
 #include "aitkenRelaxation.H"
 #include "addToRunTimeSelectionTable.H"
-#include "readEntry.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -20,36 +19,13 @@ namespace Foam
 }
 
 
-// * * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-namespace
+Foam::wordList Foam::aitkenRelaxation::validKeys()
 {
-
-// maxRelaxation, checked to lie in [omega0, 1]
-Foam::scalar readMaxRelaxation
-(
-    const Foam::dictionary& dict,
-    const Foam::scalar omega0
-)
-{
-    const Foam::scalar omegaMax = Foam::canopyEntry::number
-    (
-        dict, "maxRelaxation", "coupling.maxRelaxation", 1
-    );
-    if (omegaMax > 1 || omegaMax < omega0)
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'coupling.maxRelaxation' = " << omegaMax
-            << " must lie in [initialRelaxation, 1] = [" << omega0
-            << ", 1]" << Foam::exit(Foam::FatalIOError);
-    }
-    return omegaMax;
+    return {"type", "initial", "max"};
 }
 
-} // End anonymous namespace
-
-
-// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::aitkenRelaxation::aitkenRelaxation
 (
@@ -68,15 +44,23 @@ Foam::aitkenRelaxation::aitkenRelaxation
 
 Foam::aitkenRelaxation::aitkenRelaxation
 (
-    const dictionary& coupling,
+    const scopedEntryReader& acceleration,
     const scalar omega0
 )
 :
     aitkenRelaxation
     (
-        omega0, min(0.05, omega0), readMaxRelaxation(coupling, omega0)
+        omega0,
+        min(0.05, omega0),
+        acceleration.inRange
+        (
+            "max", "upper bound of Aitken's factor, in [initial, 1]",
+            omega0, 1, 1
+        )
     )
-{}
+{
+    acceleration.rejectUnknown(validKeys());
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //

@@ -1,216 +1,52 @@
 /*---------------------------------------------------------------------------*\
-    canopyFoam: canopyCoupling.C — immersed-boundary coupling of the flow
-    with the libcanopy structure.
+    canopyFoam: canopyCoupling.C — the fluid–structure iteration of a time
+    step: begin, correct, end.
 \*---------------------------------------------------------------------------*/
 
 #include "canopyCoupling.H"
-#include "surfaceInterpolate.H"
-#include "switchToken.H"
-#include "readChoice.H"
-#include "readEntry.H"
-#include "addedMassStabiliser.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
 namespace
 {
 
-// A switch entry coupling.<key> (true/false, on/off, yes/no); anything else
-// stops naming the entry
-bool readSwitch
-(
-    const Foam::dictionary& dict,
-    const Foam::word& key,
-    const bool deflt
-)
+// The coupling's entries that now live in a part's sub-dictionary: each
+// stops naming its new place and how to write it there
+void rejectMovedEntries(const Foam::scopedEntryReader& coupling)
 {
-    using namespace Foam;
-    if (!dict.found(key))
-    {
-        return deflt;
-    }
-    if (dict.isDict(key))
-    {
-        canopyEntry::fail
-        (
-            dict, key, "coupling." + key,
-            "must be a switch (true/false, on/off, yes/no)"
-        );
-    }
-    ITstream& is = dict.lookup(key);
-    bool value = deflt;
-    if (is.size() == 1 && readSwitchToken(is[0], value))
-    {
-        return value;
-    }
-    OStringStream given;
-    forAll(is, i)
-    {
-        given << (i ? " " : "") << is[i];
-    }
-    FatalIOErrorInFunction(dict)
-        << "Entry 'coupling." << key << "' = " << given.str().c_str()
-        << " must be a switch (true/false, on/off, yes/no)"
-        << exit(FatalIOError);
-    return deflt;
+    coupling.rejectMovedInto
+    ({
+        {"kernel", "forcing", "kernel", ""},
+        {"markerSpacing", "forcing", "markerSpacing", ""},
+        {"forcingIterations", "forcing", "iterations", ""},
+        {"tangential", "forcing", "tangential", ""},
+        {"pressureOffset", "forcing", "pressureOffset", ""},
+        {"pressureJump", "load", "type", ""},
+        {"tangentialLoad", "load", "tangential", "type ibForce; "},
+        {"acceleration", "acceleration", "type", ""},
+        {"initialRelaxation", "acceleration", "initial", "type aitken; "},
+        {"maxRelaxation", "acceleration", "max", "type aitken; "},
+        {"reuse", "acceleration", "reuse", "type IQN-ILS; "},
+        {"filter", "acceleration", "filter", "type IQN-ILS; "},
+        {"addedMass", "addedMass", "mass", ""},
+        {"addedMassPredictor", "addedMass", "predictor", "mass ..; "},
+        {"addedMassBalance", "addedMass", "balance", "mass ..; "},
+        {"addedMassDirection", "addedMass", "direction", "mass ..; "},
+    });
 }
-
-
-// The components of vector fields one after another: the secondary data
-// of the interface acceleration (interfaceAcceleration.H)
-Foam::scalarField packVectors
-(
-    const Foam::vectorField& a,
-    const Foam::vectorField& b
-)
-{
-    Foam::scalarField s(3*(a.size() + b.size()));
-    Foam::label i = 0;
-    for (const Foam::vectorField* f : {&a, &b})
-    {
-        for (const Foam::vector& v : *f)
-        {
-            for (Foam::direction d = 0; d < 3; ++d)
-            {
-                s[i++] = v[d];
-            }
-        }
-    }
-    return s;
-}
-
-
-// The inverse of packVectors (a and b keep their sizes)
-void unpackVectors
-(
-    const Foam::scalarField& s,
-    Foam::vectorField& a,
-    Foam::vectorField& b
-)
-{
-    Foam::label i = 0;
-    for (Foam::vectorField* f : {&a, &b})
-    {
-        for (Foam::vector& v : *f)
-        {
-            for (Foam::direction d = 0; d < 3; ++d)
-            {
-                v[d] = s[i++];
-            }
-        }
-    }
-}
-
 
 } // End anonymous namespace
 
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-Foam::string Foam::canopyCoupling::updateStencils()
-{
-    sectionTimer timer(ibSeconds_);
-    return ib_->updateStencils();
-}
-
-
-void Foam::canopyCoupling::spreadForce()
-{
-    sectionTimer timer(ibSeconds_);
-    vectorField f(mesh_.nCells(), Zero);
-    ib_->spread(f);
-    if (lineDrag_.valid())
-    {
-        lineDrag_->spreadReaction(f, rho_);
-    }
-    force_.primitiveFieldRef() = f;
-    force_.correctBoundaryConditions();
-    faceForce_.clear();
-}
-
-
-void Foam::canopyCoupling::readCouplingState(const IOdictionary& state)
-{
-    ib_->readState(state);
-    if (lineDrag_.valid())
-    {
-        const vectorField L
-        (
-            state.getOrDefault<vectorField>("lineDragForce", vectorField())
-        );
-        if (L.size() != lineDrag_->size())
-        {
-            FatalIOErrorInFunction(state)
-                << "Entry 'lineDragForce' holds " << L.size() << " forces,"
-                << " but the lines have " << lineDrag_->size() << " sample"
-                << " points (was coupling.lineDrag added or changed since it"
-                << " was written?)" << exit(FatalIOError);
-        }
-        lineDrag_->setForces(L);
-    }
-    frame_->readState(state);
-    if (addedMass_->active())
-    {
-        if (state.found("addedMassBalance"))
-        {
-            addedMass_->restart
-            (
-                state, "addedMassBalance",
-                state.get<vectorField>("addedMassBalance")
-            );
-        }
-        else
-        {
-            WarningInFunction
-                << "No entry 'addedMassBalance' in " << state.objectPath()
-                << ": the added-mass stabiliser's first balance after the"
-                << " restart is zero" << endl;
-        }
-    }
-    acceleration_->readState(state);
-    state.readIfPresent("runStartTime", runStartTime_);
-}
-
-
-void Foam::canopyCoupling::addCouplingState(dictionary& state) const
-{
-    ib_->writeState(state);
-    frame_->writeState(state);
-    if (lineDrag_.valid())
-    {
-        state.add("lineDragForce", lineDrag_->forces());
-    }
-    if (addedMass_->active())
-    {
-        state.add("addedMassBalance", addedMass_->balanceAcceleration());
-    }
-    acceleration_->writeState(state);
-    state.add("runStartTime", runStartTime_);
-}
-
-
-Foam::scalar Foam::canopyCoupling::residualNorm
-(
-    const scalarField& change
-) const
-{
-    if (change.empty())
-    {
-        return 0;
-    }
-    if (!rmsResidual_)
-    {
-        return max(mag(change));
-    }
-    const scalarField areas(structure_.triangleAreas());
-    return Foam::sqrt(sum(areas*sqr(change))/max(sum(areas), VSMALL));
-}
-
-
-void Foam::canopyCoupling::placeMarkers()
+Foam::string Foam::canopyCoupling::placeMarkers()
 {
     // A trial structure state at t + dt is seen from the frame's origin at
     // t + dt (canopyFrame::originAt)
+    sectionTimer timer(ibSeconds_);
     ib_->place(structure_.model(), frame_->originAt(structure_.time()));
+    return ib_->updateStencils();
 }
 
 
@@ -222,66 +58,61 @@ void Foam::canopyCoupling::returnToStepStart()
     acceleration_->discardStep();
     structure_.restore();
     placeMarkers();
-    updateStencils();
     ib_->returnToStepStart();
-    spreadForce();
+    force_->spread();
 }
 
 
-void Foam::canopyCoupling::writeSeries()
+void Foam::canopyCoupling::setNodalForces(const vectorField& tangential)
 {
-    couplingOutput::stepSummary step;
-    step.load = pressureForce_;
-    step.iterations = iteration_;
-    step.residual = residual_;
-    step.slip = slip_;
-    step.subSteps = subSteps_;
-    step.frameOrigin = frame_->origin();
-    step.lineDrag = lineDrag_.valid() ? lineDrag_->total() : vector::zero;
-    output_->writeSeries(step);
+    if (addedMass_->active())
+    {
+        structure_.setNodalForces
+        (
+            "addedMassBalance", addedMass_->balancingForces()
+        );
+    }
+    if (load_->tangential())
+    {
+        structure_.setNodalForces("tangentialLoad", tangential);
+    }
+    if (lineDrag_.valid())
+    {
+        // From the air's current velocity and the lines at the step's
+        // start (the sample points were placed there)
+        lineDrag_->compute
+        (
+            mesh_.lookupObject<volVectorField>(UName_), structure_.model(),
+            frame_->velocity(), rho_
+        );
+        labelList nodes;
+        vectorField forces;
+        lineDrag_->nodalForces(nodes, forces);
+        structure_.setNodalForces("lineDrag", nodes, forces);
+    }
 }
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::canopyCoupling::canopyCoupling
-(
-    const fvMesh& mesh
-)
+Foam::wordList Foam::canopyCoupling::validKeys()
+{
+    return
+    {
+        "scheme", "rho", "tolerance", "Uref", "residualNorm",
+        "stopIfNotConverged", "restartFluid", "U",
+        "forcing", "load", "acceleration", "addedMass", "lineDrag", "frame"
+    };
+}
+
+
+Foam::canopyCoupling::canopyCoupling(const fvMesh& mesh)
 :
     mesh_(mesh),
     structure_(mesh.time()),
-    scheme_(scheme::strong),
-    rho_(1.2),
-    tolerance_(1e-3),
-    Uref_(1),
-    rmsResidual_(false),
-    acceleration_(),
-    lineDrag_(),
-    UName_("U"),
-    force_
-    (
-        IOobject
-        (
-            "canopyForce",
-            mesh.time().timeName(),
-            mesh,
-            IOobject::NO_READ,
-            IOobject::AUTO_WRITE
-        ),
-        mesh,
-        dimensionedVector(dimVelocity/dimTime, Zero)
-    ),
-    iteration_(0),
+    step_{Zero, 0, 0, 0, 0, Zero, Zero},
     structureSolves_(0),
-    residual_(0),
     converged_(false),
-    subSteps_(0),
-    pressureForce_(Zero),
-    slip_(0),
-    stopIfNotConverged_(true),
-    restartFluid_(false),
-    failure_(),
     runStartTime_(mesh.time().startTime().value()),
     structureSeconds_(0),
     ibSeconds_(0)
@@ -292,107 +123,50 @@ Foam::canopyCoupling::canopyCoupling
     // up only the points it holds (a deadlock otherwise)
     (void)mesh_.tetBasePtIs();
 
-    if
+    const scopedEntryReader coupling
     (
-        structure_.dict().found("coupling")
-     && !structure_.dict().isDict("coupling")
-    )
-    {
-        canopyEntry::fail
+        scopedEntryReader(structure_.dict(), "").optionalSubReader("coupling")
+    );
+    rejectMovedEntries(coupling);
+    coupling.rejectUnknown(validKeys());
+
+    strong_ =
+        coupling.choice
         (
-            structure_.dict(), "coupling", "coupling",
-            "must be a sub-dictionary { scheme ..; ... }"
-        );
-    }
-    const dictionary& dict = structure_.dict().subOrEmptyDict("coupling");
-
-    // Every entry this class and its parts read; any other is reported
-    canopyEntry::reportUnknown
+            "scheme", {"strong", "explicit"}, "coupling scheme", "strong"
+        ) == "strong";
+    rho_ = coupling.positive("rho", "fluid density [kg/m^3]", 1.2);
+    const scalar tolerance =
+        coupling.positive("tolerance", "coupling tolerance", 1e-3);
+    const scalar Uref = coupling.positive("Uref", "velocity scale [m/s]", 1);
+    const bool rms =
+        coupling.choice
+        (
+            "residualNorm", {"max", "rms"}, "residual norm", "max"
+        ) == "rms";
+    stopIfNotConverged_ = coupling.flag("stopIfNotConverged", true);
+    restartFluid_ = coupling.flag("restartFluid", false);
+    UName_ = coupling.wordValue("U", "velocity field name", "U");
+    load_ = clothLoad::New(coupling.optionalSubReader("load"), rho_);
+    addedMass_.reset
     (
-        dict, "coupling.",
-        {
-            "scheme", "rho", "kernel", "markerSpacing", "forcingIterations",
-            "tangential", "pressureOffset", "tolerance", "Uref",
-            "residualNorm", "acceleration", "initialRelaxation",
-            "maxRelaxation", "reuse", "filter", "restartFluid", "addedMass",
-            "addedMassPredictor", "addedMassBalance", "addedMassDirection",
-            "pressureJump", "tangentialLoad", "stopIfNotConverged",
-            "lineDrag", "U", "frame"
-        }
+        new addedMassStabiliser
+        (
+            coupling.optionalSubReader("addedMass"), structure_
+        )
+    );
+    acceleration_ =
+        interfaceAcceleration::New(coupling.optionalSubReader("acceleration"));
+    frame_ =
+        canopyFrame::New(coupling.optionalSubReader("frame"), mesh, structure_);
+    iterate_.reset
+    (
+        new interfaceIterate(structure_, frame_(), tolerance, Uref, rms)
     );
 
-    const word schemeName
-    (
-        canopyEntry::wordValue(dict, "scheme", "coupling.scheme", "strong")
-    );
-    if (schemeName == "strong")
-    {
-        scheme_ = scheme::strong;
-    }
-    else if (schemeName == "explicit")
-    {
-        scheme_ = scheme::explicitScheme;
-    }
-    else
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'coupling.scheme' = " << schemeName
-            << " is not a coupling scheme; valid: strong explicit"
-            << exit(FatalIOError);
-    }
-
-    rho_ = canopyEntry::number(dict, "rho", "coupling.rho", 1.2);
-    tolerance_ = canopyEntry::number(dict, "tolerance", "coupling.tolerance", 1e-3);
-    Uref_ = canopyEntry::number(dict, "Uref", "coupling.Uref", 1);
-    rmsResidual_ =
-        readChoice(dict, "residualNorm", "coupling.residualNorm", {"max", "rms"})
-     == "rms";
-    stopIfNotConverged_ = readSwitch(dict, "stopIfNotConverged", true);
-    restartFluid_ = readSwitch(dict, "restartFluid", false);
-    load_ = clothLoad::New
-    (
-        dict, rho_, readSwitch(dict, "tangentialLoad", false)
-    );
-    addedMass_.reset(new addedMassStabiliser(dict, structure_));
-
-    const struct { const char* name; scalar value; scalar lo; } positive[] =
-    {
-        {"rho", rho_, 0},
-        {"tolerance", tolerance_, 0},
-        {"Uref", Uref_, 0},
-    };
-    for (const auto& p : positive)
-    {
-        if (!(p.value > p.lo))
-        {
-            FatalIOErrorInFunction(dict)
-                << "Entry 'coupling." << p.name << "' = " << p.value
-                << " must be > 0" << exit(FatalIOError);
-        }
-    }
-    acceleration_ = interfaceAcceleration::New(dict);
-    frame_ = canopyFrame::New(dict, mesh, structure_);
-
-    // A restart continues from the structure's state at the start time
-    // (canopyStructure::startsFrom decides; the constructor has read an
-    // initial state otherwise)
+    // The files; on a restart the structure's state at the start time
+    // and the coupling's (null when there is none)
     const Time& runTime = mesh.time();
-    if (structure_.startsFrom(runTime) == canopyStructure::origin::restart)
-    {
-        Info<< "canopyCoupling: restarting the structure from its state"
-            << " at t = " << runTime.timeName() << " in "
-            << canopyStructure::outputPath(runTime) << ".h5" << endl;
-        structure_.readState(runTime);
-    }
-    else if (runTime.value() != 0)
-    {
-        WarningInFunction
-            << "No structure state at the start time " << runTime.timeName()
-            << " in " << canopyStructure::outputPath(runTime) << ".h5:"
-            << " the canopy starts from its initial shape" << endl;
-    }
-
-    // The files; a restart's coupling state (null when there is none)
     output_.reset(new couplingOutput(mesh, structure_, rho_));
     const autoPtr<IOdictionary> state(output_->readState());
 
@@ -403,40 +177,38 @@ Foam::canopyCoupling::canopyCoupling
     (
         new ibForcing
         (
-            dict, mesh, structure_,
+            coupling.optionalSubReader("forcing"), mesh, structure_,
             state.valid()
           ? state->getOrDefault<labelList>("markerLevels", labelList())
           : labelList()
         )
     );
-    UName_ = canopyEntry::wordValue(dict, "U", "coupling.U", "U");
-    if (dict.found("lineDrag"))
+    if (coupling.optionalDict("lineDrag"))
     {
-        if (!dict.isDict("lineDrag"))
-        {
-            canopyEntry::fail
-            (
-                dict, "lineDrag", "coupling.lineDrag",
-                "must be a sub-dictionary { diameter ..; }"
-            );
-        }
         lineDrag_.reset
         (
             new lineDrag
             (
-                dict.subDict("lineDrag"), mesh, ib_->kernel(),
+                coupling.optionalSubReader("lineDrag"), mesh, ib_->kernel(),
                 structure_.model(), ib_->spacing()
             )
         );
     }
+    force_.reset
+    (
+        new couplingForce
+        (
+            mesh, ib_(), lineDrag_.get(), frame_(), rho_, ibSeconds_
+        )
+    );
 
     // The IB force is carried by the markers; a restart reads it and the
-    // frame
+    // parts' states
     if (runTime.value() != 0)
     {
         if (state.valid())
         {
-            readCouplingState(state());
+            readState(state());
         }
         else
         {
@@ -447,31 +219,27 @@ Foam::canopyCoupling::canopyCoupling
         }
     }
     frame_->startAt(structure_.time());
-    placeMarkers();
+    const string problem(placeMarkers());
     if (lineDrag_.valid())
     {
         lineDrag_->place(structure_.model(), frame_->origin());
     }
 
     // Interface velocity from the structure's initial state
-    normalVelocity_ = frame_->normalVelocities(structure_);
-    triangleVelocity_ = frame_->velocities(structure_);
-    const string problem(updateStencils());
+    iterate_->fromStructure();
     if (!problem.empty())
     {
         FatalErrorInFunction
             << "At the start: " << problem.c_str() << exit(FatalError);
     }
-
-    spreadForce();
+    force_->spread();
 
     Info<< "canopyCoupling: structure of " << structure_.nNodes()
         << " nodes, total mass " << structure_.totalMass() << " kg, canopy"
         << " area " << structure_.canopyArea() << " m^2, nominal diameter "
-        << output_->nominalDiameter()
-        << " m" << nl;
-    Info<< "canopyCoupling: "
-        << (scheme_ == scheme::strong ? "strong" : "explicit") << " coupling, ";
+        << output_->nominalDiameter() << " m" << nl
+        << "canopyCoupling: " << (strong_ ? "strong" : "explicit")
+        << " coupling, ";
     ib_->writeInfo(Info);
     if (lineDrag_.valid())
     {
@@ -491,9 +259,8 @@ void Foam::canopyCoupling::beginTimeStep(volVectorField& U)
     {
         // The interface velocities relative to the frame's new velocity;
         // the fictitious force changed with its acceleration
-        normalVelocity_ = frame_->normalVelocities(structure_);
-        triangleVelocity_ = frame_->velocities(structure_);
-        faceForce_.clear();
+        iterate_->fromStructure();
+        force_->frameChanged();
     }
     beginTimeStep();
 }
@@ -507,68 +274,35 @@ void Foam::canopyCoupling::beginTimeStep()
     addedMass_->beginStep(structure_);
     ib_->beginStep();
     acceleration_->reset();
-    iteration_ = 0;
+    step_.iterations = 0;
     structureSolves_ = 0;
     converged_ = false;
-    residual_ = 0;
+    step_.residual = 0;
 }
 
 
 void Foam::canopyCoupling::forcingIncrement(const volVectorField& U)
 {
-    sectionTimer timer(ibSeconds_);
-    slip_ = ib_->forcingIncrement
-    (
-        U, normalVelocity_, triangleVelocity_, Uref_, force_
-    );
-    force_.correctBoundaryConditions();
-    faceForce_.clear();
-}
-
-
-const Foam::surfaceScalarField& Foam::canopyCoupling::faceForce() const
-{
-    if (!faceForce_.valid())
-    {
-        sectionTimer timer(ibSeconds_);
-        faceForce_.reset
+    step_.slip =
+        force_->forcingIncrement
         (
-            new surfaceScalarField
-            (
-                "canopyFaceForce",
-                (
-                    fvc::interpolate(force_)
-                  - dimensionedVector
-                    (
-                        "A", force_.dimensions(), frame_->acceleration()
-                    )
-                ) & mesh_.Sf()
-            )
+            U, iterate_->normalVelocity(), iterate_->velocity(),
+            iterate_->Uref()
         );
-
-        // The air entering where the frame sets the far field already
-        // moves with the frame: no flux of the fictitious force there
-        // (else a spurious pressure gradient builds up across the box,
-        // which the pressure sampling at x +- delta n would read as a jump
-        // of rho A 2 delta)
-        frame_->zeroFictitiousFlux(faceForce_->boundaryFieldRef());
-    }
-    return faceForce_();
 }
 
 
 bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
 {
-    ++iteration_;
-    if (scheme_ == scheme::explicitScheme && structureSolves_ > 0)
+    ++step_.iterations;
+    if (!strong_ && structureSolves_ > 0)
     {
         return false;
     }
 
-    const canopyMarkers& mk = ib_->markers();
-
     // The load on the cloth (clothLoad): the pressure jump per marker,
     // then per triangle, and a tangential force per marker, to the nodes
+    const canopyMarkers& mk = ib_->markers();
     scalarField dpMarker;
     {
         sectionTimer timer(ibSeconds_);
@@ -578,7 +312,7 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
             p
         );
     }
-    pressureForce_ = sum(dpMarker*mk.areas()*mk.normals());
+    step_.load = sum(dpMarker*mk.areas()*mk.normals());
     vectorField tangentialNodal;
     if (load_->tangential())
     {
@@ -586,49 +320,27 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
         (
             load_->tangentialForces(mk, ib_->markerForces())
         );
-        pressureForce_ += sum(tangential);
+        step_.load += sum(tangential);
         tangentialNodal = mk.toNodes(tangential);
     }
 
     // The secondary part of the iterate this solve reads (besides the
-    // normal velocity): the stabiliser's balancing acceleration and the
-    // no-slip velocity the forcing used
-    const vectorField balanceUsed(addedMass_->balanceAcceleration());
-    const vectorField triangleVelocityUsed(triangleVelocity_);
+    // normal velocity): the stabiliser's balance and the no-slip velocity
+    iterate_->hold(addedMass_());
 
-    label substeps = 0;
+    // The structure's time step from its start under these loads
     string message;
     bool advanced = false;
     {
         sectionTimer timer(structureSeconds_);
         structure_.restore();
         structure_.setPressureJump(mk.triangleAverage(dpMarker));
-        if (addedMass_->active() || lineDrag_.valid() || load_->tangential())
-        {
-            vectorField nodal(structure_.nNodes(), Zero);
-            if (addedMass_->active())
-            {
-                nodal = addedMass_->balancingForces();
-            }
-            if (load_->tangential())
-            {
-                nodal += tangentialNodal;
-            }
-            if (lineDrag_.valid())
-            {
-                // From the air's current velocity and the lines at the
-                // step's start (the sample points were placed there)
-                lineDrag_->compute
-                (
-                    mesh_.lookupObject<volVectorField>(UName_),
-                    structure_.model(), frame_->velocity(), rho_
-                );
-                lineDrag_->addNodalForces(nodal);
-            }
-            structure_.setNodalForces(nodal);
-        }
+        setNodalForces(tangentialNodal);
         advanced =
-            structure_.tryAdvance(mesh_.time().deltaTValue(), substeps, message);
+            structure_.tryAdvance
+            (
+                mesh_.time().deltaTValue(), step_.subSteps, message
+            );
         if (advanced)
         {
             addedMass_->update(structure_, mesh_.time().deltaTValue());
@@ -638,57 +350,18 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
     {
         failure_ =
             "the structure's time step to t = " + mesh_.time().timeName()
-          + " failed (coupling iteration " + Foam::name(iteration_) + "): "
-          + message;
+          + " failed (coupling iteration " + Foam::name(step_.iterations)
+          + "): " + message;
         converged_ = true;
         return true;            // ends the outer loop
     }
-    subSteps_ = substeps;
     ++structureSolves_;
 
-    const scalarField target(frame_->normalVelocities(structure_));
-    triangleVelocity_ = frame_->velocities(structure_);
-    const label nt = target.size();
+    // The residual, the convergence decision and the next iterate
+    converged_ = iterate_->update(strong_, acceleration_(), addedMass_());
+    step_.residual = iterate_->residual();
 
-    const scalar scale = max(Uref_, nt ? max(mag(target)) : 0);
-    bool stop = false;
-    // This iteration's change of the interface velocity: its norm is the
-    // residual; where it is largest goes to the log
-    const scalarField change(target - normalVelocity_);
-    residual_ = residualNorm(change)/scale;
-    const label worst = findMax(scalarField(mag(change)));
-    if (scheme_ == scheme::strong)
-    {
-        converged_ = residual_ < tolerance_;
-        stop = converged_;
-        // The stabiliser's balance and the no-slip velocity are the
-        // acceleration's secondary data (interfaceAcceleration.H: IQN-ILS
-        // moves them with its columns, Aitken hands them the last solve's);
-        // on convergence they are the last solve's, so the balance cancels
-        // as before
-        vectorField balance(addedMass_->balanceAcceleration());
-        scalarField secondary(packVectors(balanceUsed, triangleVelocityUsed));
-        acceleration_->relax
-        (
-            normalVelocity_, target,
-            secondary, packVectors(balance, triangleVelocity_)
-        );
-        if (!stop)
-        {
-            unpackVectors(secondary, balance, triangleVelocity_);
-            addedMass_->setBalanceAcceleration(balance);
-        }
-    }
-    else
-    {
-        // Explicit: one structure solve per step; the PIMPLE outer loop
-        // runs its own course
-        normalVelocity_ = target;
-        converged_ = true;
-    }
-
-    placeMarkers();
-    const string problem(updateStencils());
+    const string problem(placeMarkers());
     if (!problem.empty())
     {
         failure_ = "at t = " + mesh_.time().timeName() + ", " + problem;
@@ -702,31 +375,21 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
     // step's IB force, so that the fluid's response is a function of the
     // interface velocity alone (not of the iteration history); the
     // markers' forces move with them
-    if (scheme_ == scheme::strong && !stop)
+    const bool stop = strong_ && converged_;
+    if (strong_ && !stop)
     {
         ib_->returnToStepStart();
     }
-    spreadForce();
+    force_->spread();
 
-    Info<< "canopyCoupling: iteration " << iteration_
-        << ", interface residual " << residual_;
-    if (worst >= 0)
-    {
-        Info<< " (largest at " << structure_.triangleCentres()()[worst]
-            << ")";
-    }
-    Info
-        << ", slip " << slip_
-        << ", " << acceleration_->describe().c_str()
-        << ", structure sub-steps " << substeps
-        << (load_->tangential() ? ", load on the cloth " : ", pressure force ")
-        << pressureForce_
-        << ", IB force " << rho_*ib_->totalForce();
-    if (lineDrag_.valid())
-    {
-        Info<< ", line drag " << lineDrag_->total();
-    }
-    Info<< endl;
+    // The iteration's line in the log
+    const vector drag(lineDrag_.valid() ? lineDrag_->total() : vector::zero);
+    output_->logIteration
+    (
+        step_, iterate_->worst(), acceleration_->describe(),
+        load_->tangential(), rho_*ib_->totalForce(),
+        lineDrag_.valid() ? &drag : nullptr
+    );
 
     return stop;
 }
@@ -734,13 +397,9 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
 
 bool Foam::canopyCoupling::endTimeStep()
 {
-    if (!failed() && scheme_ == scheme::strong && !converged_)
+    if (!failed() && strong_ && !converged_)
     {
-        const string text =
-            "the coupling did not converge at t = " + mesh_.time().timeName()
-          + " in " + Foam::name(iteration_) + " iterations (residual "
-          + Foam::name(residual_) + ", slip " + Foam::name(slip_)
-          + ", tolerance " + Foam::name(tolerance_) + ")";
+        const string text(output_->notConverged(step_, iterate_->tolerance()));
         if (stopIfNotConverged_)
         {
             failure_ = text;
@@ -750,14 +409,14 @@ bool Foam::canopyCoupling::endTimeStep()
             WarningInFunction << text.c_str() << endl;
         }
     }
+
     // The frame moves on with the step; the markers with it
     const bool frameMoved =
         !failed()
      && frame_->moveOn(mesh_.time().deltaTValue(), structure_.time());
     if (frameMoved)
     {
-        placeMarkers();
-        const string problem(updateStencils());
+        const string problem(placeMarkers());
         if (!problem.empty())
         {
             frame_->undoMove();
@@ -791,19 +450,51 @@ bool Foam::canopyCoupling::endTimeStep()
     if (frameMoved || lineDrag_.valid())
     {
         // The force from the markers' and the lines' new places
-        spreadForce();
+        force_->spread();
     }
 
     // The next step starts from the committed structure's interface
     // velocity (not the relaxed iterate), so that a restart, which knows
     // only the structure's state, continues exactly
-    normalVelocity_ = frame_->normalVelocities(structure_);
-    writeSeries();
+    iterate_->normalFromStructure();
+    step_.frameOrigin = frame_->origin();
+    step_.lineDrag = lineDrag_.valid() ? lineDrag_->total() : vector::zero;
+    output_->writeSeries(step_);
     if (mesh_.time().writeTime())
     {
         writeStructure();
     }
     return true;
+}
+
+
+// * * * * * * * * * * * * * * * Restart state  * * * * * * * * * * * * * * //
+
+void Foam::canopyCoupling::readState(const IOdictionary& state)
+{
+    ib_->readState(state);
+    if (lineDrag_.valid())
+    {
+        lineDrag_->readState(state);
+    }
+    frame_->readState(state);
+    addedMass_->readState(state);
+    acceleration_->readState(state);
+    state.readIfPresent("runStartTime", runStartTime_);
+}
+
+
+void Foam::canopyCoupling::writeState(dictionary& state) const
+{
+    ib_->writeState(state);
+    frame_->writeState(state);
+    if (lineDrag_.valid())
+    {
+        lineDrag_->writeState(state);
+    }
+    addedMass_->writeState(state);
+    acceleration_->writeState(state);
+    state.add("runStartTime", runStartTime_);
 }
 
 
@@ -816,10 +507,13 @@ void Foam::canopyCoupling::writeStructure()
         output_->write
         (
             frame_->meshFrameOrigin(),
-            [this](dictionary& state) { addCouplingState(state); }
+            [this](dictionary& state) { writeState(state); }
         );
     }
     Info<< "canopyCoupling: wall time since the run started: structure "
         << structureSeconds_ << " s, immersed boundary " << ibSeconds_
         << " s (the rest of ClockTime is the fluid)" << endl;
 }
+
+
+// ************************************************************************* //

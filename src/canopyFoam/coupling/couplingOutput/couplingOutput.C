@@ -1,6 +1,6 @@
 /*---------------------------------------------------------------------------*\
     canopyFoam: couplingOutput.C — the canopy's time series, the structure's
-    output steps and the coupling's restart state.
+    output steps, the coupling's restart state and the iteration's log.
 \*---------------------------------------------------------------------------*/
 
 #include "couplingOutput.H"
@@ -66,15 +66,33 @@ Foam::couplingOutput::couplingOutput
     mesh_(mesh),
     structure_(structure),
     rho_(rho),
-    nominalDiameter_
-    (
+    nominalDiameter_(0)
+{
+    // A restart continues from the structure's state at the start time
+    // (canopyStructure::startsFrom decides; the structure's constructor
+    // has read an initial state otherwise)
+    const Time& runTime = mesh.time();
+    if (structure.startsFrom(runTime) == canopyStructure::origin::restart)
+    {
+        Info<< "canopyCoupling: restarting the structure from its state"
+            << " at t = " << runTime.timeName() << " in "
+            << canopyStructure::outputPath(runTime) << ".h5" << endl;
+        structure.readState(runTime);
+    }
+    else if (runTime.value() != 0)
+    {
+        WarningInFunction
+            << "No structure state at the start time " << runTime.timeName()
+            << " in " << canopyStructure::outputPath(runTime) << ".h5:"
+            << " the canopy starts from its initial shape" << endl;
+    }
+    nominalDiameter_ =
         structure.dict().subOrEmptyDict("canopy").getOrDefault<scalar>
         (
             "diameter",
             Foam::sqrt(4*structure.canopyArea()/constant::mathematical::pi)
-        )
-    )
-{}
+        );
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -164,6 +182,50 @@ void Foam::couplingOutput::writeSeries(const stepSummary& step)
         << ' ' << l.x() << ' ' << l.y() << ' ' << l.z()
         << ' ' << centre.x() << ' ' << centre.y() << ' ' << centre.z()
         << endl;
+}
+
+
+void Foam::couplingOutput::logIteration
+(
+    const stepSummary& step,
+    const label worst,
+    const string& acceleration,
+    const bool tangentialLoad,
+    const vector& ibForce,
+    const vector* lineDrag
+) const
+{
+    Info<< "canopyCoupling: iteration " << step.iterations
+        << ", interface residual " << step.residual;
+    if (worst >= 0)
+    {
+        Info<< " (largest at " << structure_.triangleCentres()()[worst]
+            << ")";
+    }
+    Info<< ", slip " << step.slip
+        << ", " << acceleration.c_str()
+        << ", structure sub-steps " << step.subSteps
+        << (tangentialLoad ? ", load on the cloth " : ", pressure force ")
+        << step.load << ", IB force " << ibForce;
+    if (lineDrag)
+    {
+        Info<< ", line drag " << *lineDrag;
+    }
+    Info<< endl;
+}
+
+
+Foam::string Foam::couplingOutput::notConverged
+(
+    const stepSummary& step,
+    const scalar tolerance
+) const
+{
+    return
+        "the coupling did not converge at t = " + mesh_.time().timeName()
+      + " in " + Foam::name(step.iterations) + " iterations (residual "
+      + Foam::name(step.residual) + ", slip " + Foam::name(step.slip)
+      + ", tolerance " + Foam::name(tolerance) + ")";
 }
 
 

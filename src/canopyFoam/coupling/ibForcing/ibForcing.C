@@ -4,8 +4,6 @@
 \*---------------------------------------------------------------------------*/
 
 #include "ibForcing.H"
-#include "readChoice.H"
-#include "readEntry.H"
 #include "treeDataCell.H"
 #include "indexedOctree.H"
 
@@ -87,9 +85,19 @@ Foam::tmp<Foam::scalarField> Foam::ibForcing::localCellSizes
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
+Foam::wordList Foam::ibForcing::validKeys()
+{
+    return
+    {
+        "kernel", "markerSpacing", "iterations", "tangential",
+        "pressureOffset"
+    };
+}
+
+
 Foam::ibForcing::ibForcing
 (
-    const dictionary& dict,
+    const scopedEntryReader& forcing,
     const fvMesh& mesh,
     const canopyStructure& structure,
     const labelList& restartLevels
@@ -98,58 +106,48 @@ Foam::ibForcing::ibForcing
     mesh_(mesh),
     forcingIterations_
     (
-        canopyEntry::integer
+        forcing.integerAtLeast
         (
-            dict, "forcingIterations", "coupling.forcingIterations", 2
+            "iterations", "multi-direct forcing iterations", 1, 2
         )
     ),
     noSlip_
     (
-        readChoice(dict, "tangential", "coupling.tangential", {"noSlip", "free"})
+        forcing.choice
+        (
+            "tangential", {"noSlip", "free"}, "tangential condition", "noSlip"
+        )
      == "noSlip"
     ),
     pressureOffset_
     (
-        canopyEntry::number
+        forcing.positive
         (
-            dict, "pressureOffset", "coupling.pressureOffset", 3
+            "pressureOffset", "pressure sampling distance [cells]", 3
         )
     ),
     kernelName_
     (
-        canopyEntry::wordValue(dict, "kernel", "coupling.kernel", "roma3")
+        forcing.choice
+        (
+            "kernel", deltaKernel::dictionaryConstructorTablePtr_->sortedToc(),
+            "delta kernel", "roma3"
+        )
     ),
-    uniformSpacing_(dict.found("markerSpacing")),
+    uniformSpacing_(forcing.found("markerSpacing")),
     spacing_
     (
-        canopyEntry::number
+        forcing.positive
         (
-            dict, "markerSpacing", "coupling.markerSpacing",
+            "markerSpacing", "marker spacing [m]",
             Foam::cbrt(gMin(mesh.V().field()))
         )
     ),
     totalForce_(Zero),
     coarseMarkers_(0)
 {
-    if (!(pressureOffset_ > 0))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'coupling.pressureOffset' = " << pressureOffset_
-            << " must be > 0" << exit(FatalIOError);
-    }
-    if (forcingIterations_ < 1)
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'coupling.forcingIterations' = " << forcingIterations_
-            << " must be >= 1" << exit(FatalIOError);
-    }
+    forcing.rejectUnknown(validKeys());
     kernel_ = deltaKernel::New(kernelName_);
-    if (!(spacing_ > 0))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'coupling.markerSpacing' = " << spacing_
-            << " must be > 0" << exit(FatalIOError);
-    }
 
     // The triangles' subdivision: a restart's own, else from the spacing
     labelList levels(restartLevels);
@@ -314,7 +312,8 @@ void Foam::ibForcing::readState(const dictionary& dict)
         FatalIOErrorInFunction(dict)
             << "Entry 'markerForce' holds " << F.size() << " marker forces,"
             << " but the canopy has " << markerForce_.size()
-            << " markers (were the canopy or coupling.markerSpacing changed"
+            << " markers (were the canopy or coupling.forcing.markerSpacing"
+            << " changed"
             << " since it was written?)" << exit(FatalIOError);
     }
     markerForce_ = F;

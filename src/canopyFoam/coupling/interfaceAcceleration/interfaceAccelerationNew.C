@@ -1,48 +1,38 @@
 /*---------------------------------------------------------------------------*\
     canopyFoam: interfaceAccelerationNew.C — run-time selection of the
-    interface acceleration from the coupling dictionary.
+    interface acceleration from the coupling's acceleration sub-dictionary.
 \*---------------------------------------------------------------------------*/
 
 #include "interfaceAcceleration.H"
-#include "error.H"
-#include "readEntry.H"
 
 // * * * * * * * * * * * * * * * * Selector  * * * * * * * * * * * * * * * * //
 
 Foam::autoPtr<Foam::interfaceAcceleration> Foam::interfaceAcceleration::New
 (
-    const dictionary& dict
+    const scopedEntryReader& acceleration
 )
 {
     const word type
     (
-        canopyEntry::wordValue(dict, "acceleration", "coupling.acceleration", "aitken")
+        acceleration.choice
+        (
+            "type", dictionaryConstructorTablePtr_->sortedToc(),
+            "interface acceleration", "aitken"
+        )
     );
-    auto cstrIter = dictionaryConstructorTablePtr_->cfind(type);
-    if (!cstrIter.found())
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'coupling.acceleration' = " << type
-            << " is not valid; valid:";
-        for (const word& valid : dictionaryConstructorTablePtr_->sortedToc())
-        {
-            FatalIOError << ' ' << valid;
-        }
-        FatalIOError << exit(FatalIOError);
-    }
-
-    const scalar omega0 = canopyEntry::number
+    const scalar omega0 = acceleration.number
     (
-        dict, "initialRelaxation", "coupling.initialRelaxation", 0.5
+        "initial", "the first relaxation factor, in (0, 1]", 0.5
     );
     if (!(omega0 > 0) || omega0 > 1)
     {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'coupling.initialRelaxation' = " << omega0
-            << " must lie in (0, 1]" << exit(FatalIOError);
+        acceleration.fail
+        (
+            "initial",
+            "= " + scopedEntryReader::format(omega0) + " must lie in (0, 1]"
+        );
     }
-
-    return cstrIter()(dict, omega0);
+    return dictionaryConstructorTablePtr_->cfind(type)()(acceleration, omega0);
 }
 
 

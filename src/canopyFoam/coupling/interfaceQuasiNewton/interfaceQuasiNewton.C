@@ -7,7 +7,6 @@
 #include "UPtrList.H"
 #include "SubList.H"
 #include "addToRunTimeSelectionTable.H"
-#include "readEntry.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -28,31 +27,19 @@ namespace Foam
 namespace
 {
 
-// reuse, checked to be >= 0
-Foam::label readReuse(const Foam::dictionary& dict)
-{
-    const Foam::label reuse =
-        Foam::canopyEntry::integer(dict, "reuse", "coupling.reuse", 8);
-    if (reuse < 0)
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'coupling.reuse' = " << reuse << " must be >= 0"
-            << Foam::exit(Foam::FatalIOError);
-    }
-    return reuse;
-}
-
-
 // filter, checked to lie in (0, 1)
-Foam::scalar readFilter(const Foam::dictionary& dict)
+Foam::scalar readFilter(const Foam::scopedEntryReader& acceleration)
 {
     const Foam::scalar filter =
-        Foam::canopyEntry::number(dict, "filter", "coupling.filter", 1e-3);
+        acceleration.number("filter", "relative QR filter, in (0, 1)", 1e-3);
     if (!(filter > 0) || !(filter < 1))
     {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'coupling.filter' = " << filter
-            << " must lie in (0, 1)" << Foam::exit(Foam::FatalIOError);
+        acceleration.fail
+        (
+            "filter",
+            "= " + Foam::scopedEntryReader::format(filter)
+          + " must lie in (0, 1)"
+        );
     }
     return filter;
 }
@@ -161,16 +148,31 @@ Foam::interfaceQuasiNewton::interfaceQuasiNewton
 {}
 
 
+Foam::wordList Foam::interfaceQuasiNewton::validKeys()
+{
+    return {"type", "initial", "reuse", "filter"};
+}
+
+
 Foam::interfaceQuasiNewton::interfaceQuasiNewton
 (
-    const dictionary& coupling,
+    const scopedEntryReader& acceleration,
     const scalar omega0
 )
 :
     // reuse is read (and checked) before filter
-    interfaceQuasiNewton(omega0, readReuse(coupling), 0)
+    interfaceQuasiNewton
+    (
+        omega0,
+        acceleration.integerAtLeast
+        (
+            "reuse", "past time steps whose columns are reused", 0, 8
+        ),
+        0
+    )
 {
-    filter_ = readFilter(coupling);
+    filter_ = readFilter(acceleration);
+    acceleration.rejectUnknown(validKeys());
 }
 
 

@@ -3,15 +3,20 @@
 \*---------------------------------------------------------------------------*/
 
 #include "lineDrag.H"
-#include "readEntry.H"
 #include "canopy.h"
 #include "mathematicalConstants.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
+Foam::wordList Foam::lineDrag::validKeys()
+{
+    return {"diameter", "Cd", "Cf", "spacing"};
+}
+
+
 Foam::lineDrag::lineDrag
 (
-    const dictionary& dict,
+    const scopedEntryReader& reader,
     const fvMesh& mesh,
     const deltaKernel& kernel,
     const canopy_model* model,
@@ -19,43 +24,16 @@ Foam::lineDrag::lineDrag
 )
 :
     diameter_(0),
-    Cd_(canopyEntry::number(dict, "Cd", "coupling.lineDrag.Cd", 1.1)),
-    Cf_(canopyEntry::number(dict, "Cf", "coupling.lineDrag.Cf", 0)),
+    Cd_(reader.nonNegative("Cd", "drag coefficient normal to the line", 1.1)),
+    Cf_(reader.nonNegative("Cf", "skin-friction coefficient", 0)),
     stencil_(mesh, kernel)
 {
-    canopyEntry::reportUnknown
+    reader.rejectUnknown(validKeys());
+    diameter_ = reader.positive("diameter", "the lines' diameter [m]");
+    const scalar spacing = reader.positive
     (
-        dict, "coupling.lineDrag.", {"diameter", "Cd", "Cf", "spacing"}
+        "spacing", "sample spacing along the lines [m]", defaultSpacing
     );
-    diameter_ =
-        canopyEntry::number(dict, "diameter", "coupling.lineDrag.diameter", 0);
-    if (!dict.found("diameter"))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'coupling.lineDrag.diameter' is missing: the lines'"
-            << " diameter [m]" << exit(FatalIOError);
-    }
-    const scalar spacing = canopyEntry::number
-    (
-        dict, "spacing", "coupling.lineDrag.spacing", defaultSpacing
-    );
-    const struct { const char* name; scalar value; bool zeroOk; } checks[] =
-    {
-        {"diameter", diameter_, false},
-        {"Cd", Cd_, true},
-        {"Cf", Cf_, true},
-        {"spacing", spacing, false},
-    };
-    for (const auto& c : checks)
-    {
-        if (!(c.zeroOk ? c.value >= 0 : c.value > 0))
-        {
-            FatalIOErrorInFunction(dict)
-                << "Entry 'coupling.lineDrag." << c.name << "' = " << c.value
-                << " must be " << (c.zeroOk ? ">= 0" : "> 0")
-                << exit(FatalIOError);
-        }
-    }
 
     // The line springs; each split by its rest length (fixed, so that a
     // restart from a stretched state makes the same sample points)
@@ -88,7 +66,7 @@ Foam::lineDrag::lineDrag
     }
     if (node0.empty())
     {
-        FatalIOErrorInFunction(dict)
+        FatalIOErrorInFunction(reader.dict())
             << "Entry 'coupling.lineDrag' is given, but the structure has no"
             << " suspension lines" << exit(FatalIOError);
     }
@@ -180,12 +158,20 @@ void Foam::lineDrag::compute
 }
 
 
-void Foam::lineDrag::addNodalForces(vectorField& nodal) const
+void Foam::lineDrag::nodalForces
+(
+    labelList& nodes,
+    vectorField& forces
+) const
 {
+    nodes.setSize(2*force_.size());
+    forces.setSize(2*force_.size());
     forAll(force_, k)
     {
-        nodal[node0_[k]] += (1 - fraction_[k])*force_[k];
-        nodal[node1_[k]] += fraction_[k]*force_[k];
+        nodes[2*k] = node0_[k];
+        forces[2*k] = (1 - fraction_[k])*force_[k];
+        nodes[2*k + 1] = node1_[k];
+        forces[2*k + 1] = fraction_[k]*force_[k];
     }
 }
 
@@ -210,4 +196,28 @@ void Foam::lineDrag::setForces(const vectorField& f)
             << " sample points" << abort(FatalError);
     }
     force_ = f;
+}
+
+
+void Foam::lineDrag::writeState(dictionary& state) const
+{
+    state.add("lineDragForce", force_);
+}
+
+
+void Foam::lineDrag::readState(const dictionary& state)
+{
+    const vectorField f
+    (
+        state.getOrDefault<vectorField>("lineDragForce", vectorField())
+    );
+    if (f.size() != size())
+    {
+        FatalIOErrorInFunction(state)
+            << "Entry 'lineDragForce' holds " << f.size() << " forces,"
+            << " but the lines have " << size() << " sample points (was"
+            << " coupling.lineDrag added or changed since it was written?)"
+            << exit(FatalIOError);
+    }
+    setForces(f);
 }

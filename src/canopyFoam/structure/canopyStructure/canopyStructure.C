@@ -455,11 +455,95 @@ void Foam::canopyStructure::setPressureJump(const scalarField& dp)
 }
 
 
-void Foam::canopyStructure::setNodalForces(const vectorField& f)
+const Foam::wordList& Foam::canopyStructure::nodalForceNames()
 {
+    static const wordList names
+    ({
+        "addedMassBalance", "tangentialLoad", "lineDrag"
+    });
+    return names;
+}
+
+
+void Foam::canopyStructure::setNodalForces
+(
+    const word& name,
+    const vectorField& f
+)
+{
+    setNodalForces(name, labelList(), f);
+}
+
+
+void Foam::canopyStructure::setNodalForces
+(
+    const word& name,
+    const labelList& nodes,
+    const vectorField& f
+)
+{
+    const label slot = nodalForceNames().find(name);
+    const label n = nNodes();
+    if (slot < 0)
+    {
+        FatalErrorInFunction
+            << "Unknown nodal force contribution '" << name << "'; valid: "
+            << nodalForceNames() << exit(FatalError);
+    }
+    if (nodes.empty() ? f.size() != n : nodes.size() != f.size())
+    {
+        FatalErrorInFunction
+            << "Nodal force contribution '" << name << "': " << f.size()
+            << " forces for " << (nodes.empty() ? n : nodes.size())
+            << (nodes.empty() ? " nodes" : " node indices")
+            << exit(FatalError);
+    }
+    for (const label node : nodes)
+    {
+        if (node < 0 || node >= n)
+        {
+            FatalErrorInFunction
+                << "Nodal force contribution '" << name << "': node " << node
+                << " outside 0.." << n - 1 << exit(FatalError);
+        }
+    }
+    nodalForces_.setSize(nodalForceNames().size());
+    nodalContribution& c = nodalForces_[slot];
+    c.set = true;
+    c.nodes = nodes;
+    c.forces = f;
+
+    vectorField sum(n, Zero);
+    bool first = true;
+    for (const nodalContribution& part : nodalForces_)
+    {
+        if (!part.set)
+        {
+            continue;
+        }
+        if (part.nodes.empty())
+        {
+            if (first)
+            {
+                sum = part.forces;
+            }
+            else
+            {
+                sum += part.forces;
+            }
+        }
+        else
+        {
+            forAll(part.nodes, i)
+            {
+                sum[part.nodes[i]] += part.forces[i];
+            }
+        }
+        first = false;
+    }
     check
     (
-        canopy_model_set_nodal_forces(model_.get(), raw(f), f.size()),
+        canopy_model_set_nodal_forces(model_.get(), raw(sum), sum.size()),
         FUNCTION_NAME, "canopy_model_set_nodal_forces"
     );
 }

@@ -18,6 +18,7 @@ License
 #include "Switch.H"
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 
 // * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * * //
@@ -144,9 +145,11 @@ bool Foam::scopedEntryReader::found(const word& key) const
 
 std::string Foam::scopedEntryReader::format(const scalar x)
 {
-    OStringStream os;
-    os << x;
-    return os.str();
+    // 15 digits whatever precision the run's streams have been set to
+    // (writePrecision): 0.05, not 0.050000000000000003
+    char text[32];
+    std::snprintf(text, sizeof(text), "%.15g", x);
+    return text;
 }
 
 
@@ -162,6 +165,10 @@ std::string Foam::scopedEntryReader::given(const word& key) const
         return "{ ... }";
     }
     const ITstream& is = e->stream();
+    if (is.size() == 1 && is[0].isNumber())
+    {
+        return format(is[0].number());
+    }
     return is.empty() ? std::string("(empty)") : std::string(is.toString());
 }
 
@@ -213,6 +220,57 @@ void Foam::scopedEntryReader::warnUnused
                 << "Entry '" << name(key).c_str() << "' is not used"
                 << context.c_str() << " and is ignored. Valid entries here: "
                 << flatOutput(used) << endl;
+        }
+    }
+}
+
+
+void Foam::scopedEntryReader::rejectUnknown(const wordList& valid) const
+{
+    for (const word& key : dict_.toc())
+    {
+        if (!valid.found(key))
+        {
+            fail
+            (
+                key,
+                "is not a valid entry here. Valid entries: " + spaced(valid)
+            );
+        }
+    }
+}
+
+
+void Foam::scopedEntryReader::rejectMoved
+(
+    const word& key,
+    const std::string& newName,
+    const std::string& example
+) const
+{
+    if (found(key))
+    {
+        fail(key, "is now " + newName + ": write " + example);
+    }
+}
+
+
+void Foam::scopedEntryReader::rejectMovedInto
+(
+    std::initializer_list<movedEntry> moved
+) const
+{
+    for (const movedEntry& m : moved)
+    {
+        if (found(m.key) && !dict().isDict(m.key))
+        {
+            rejectMoved
+            (
+                m.key,
+                name(m.section) + '.' + m.newKey,
+                std::string(m.section) + " { " + m.with + m.newKey + ' '
+              + given(m.key) + "; }"
+            );
         }
     }
 }
@@ -599,6 +657,16 @@ Foam::scopedEntryReader Foam::scopedEntryReader::subReader
 ) const
 {
     return scopedEntryReader(requiredDict(key, what), name(key));
+}
+
+
+Foam::scopedEntryReader Foam::scopedEntryReader::optionalSubReader
+(
+    const word& key
+) const
+{
+    const dictionary* d = optionalDict(key);
+    return scopedEntryReader(d ? *d : dictionary::null, name(key));
 }
 
 

@@ -3,7 +3,6 @@
 \*---------------------------------------------------------------------------*/
 
 #include "fixed.H"
-#include "readEntry.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -20,9 +19,15 @@ namespace canopyFrames
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
+Foam::wordList Foam::canopyFrames::fixed::validKeys()
+{
+    return {"type", "wind"};
+}
+
+
 Foam::canopyFrames::fixed::fixed
 (
-    const dictionary& dict,
+    const scopedEntryReader& frame,
     const fvMesh& mesh,
     const canopyStructure& structure
 )
@@ -30,7 +35,8 @@ Foam::canopyFrames::fixed::fixed
     canopyFrame(mesh)
 {
     // Checked like payload's, so that a malformed entry stops either way
-    canopyEntry::vectorValue(dict, "wind", "coupling.frame.wind", Zero);
+    frame.vectorValue("wind", "ambient wind [m/s]", Zero);
+    frame.rejectUnknown(validKeys());
 }
 
 

@@ -3,7 +3,6 @@
 \*---------------------------------------------------------------------------*/
 
 #include "payload.H"
-#include "readEntry.H"
 #include "inletOutletFvPatchFields.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -49,25 +48,39 @@ void Foam::canopyFrames::payload::setFarField
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
+Foam::wordList Foam::canopyFrames::payload::validKeys()
+{
+    return {"type", "inletPatches", "wind"};
+}
+
+
 Foam::canopyFrames::payload::payload
 (
-    const dictionary& dict,
+    const scopedEntryReader& frame,
     const fvMesh& mesh,
     const canopyStructure& structure
 )
 :
     canopyFrame(mesh),
     structure_(structure),
-    wind_(canopyEntry::vectorValue(dict, "wind", "coupling.frame.wind", Zero)),
+    wind_(frame.vectorValue("wind", "ambient wind [m/s]", Zero)),
     inletPatches_(),
     shift_(Zero),
     shiftTime_(0)
 {
+    frame.rejectUnknown(validKeys());
+    const dictionary& dict = frame.dict();
     if (!structure_.hasPayload())
     {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'coupling.frame.type' = payload, but the structure has"
-            << " no payload" << exit(FatalIOError);
+        frame.fail("type", "= payload, but the structure has no payload");
+    }
+    if (!frame.found("inletPatches"))
+    {
+        frame.fail
+        (
+            "inletPatches",
+            "is missing (required: the far field's patches)"
+        );
     }
     const wordReList names(dict.get<wordReList>("inletPatches"));
     inletPatches_ = mesh.boundaryMesh().patchSet(names, false).sortedToc();

@@ -1,40 +1,34 @@
 /*---------------------------------------------------------------------------*\
     canopyFoam: clothLoadNew.C — run-time selection of the load on the cloth
-    from the coupling dictionary.
+    from the coupling's load sub-dictionary.
 \*---------------------------------------------------------------------------*/
 
 #include "clothLoad.H"
-#include "readEntry.H"
 
 // * * * * * * * * * * * * * * * * Selector  * * * * * * * * * * * * * * * * //
 
+Foam::wordList Foam::clothLoad::validKeys()
+{
+    return {"type", "tangential"};
+}
+
+
 Foam::autoPtr<Foam::clothLoad> Foam::clothLoad::New
 (
-    const dictionary& coupling,
-    const scalar rho,
-    const bool tangential
+    const scopedEntryReader& load,
+    const scalar rho
 )
 {
     const word type
     (
-        canopyEntry::wordValue
+        load.choice
         (
-            coupling, "pressureJump", "coupling.pressureJump", "sampled"
+            "type", dictionaryConstructorTablePtr_->sortedToc(),
+            "load on the cloth", "sampled"
         )
     );
-    auto cstrIter = dictionaryConstructorTablePtr_->cfind(type);
-    if (!cstrIter.found())
-    {
-        FatalIOErrorInFunction(coupling)
-            << "Entry 'coupling.pressureJump' = " << type
-            << " is not valid; valid:";
-        for (const word& valid : dictionaryConstructorTablePtr_->sortedToc())
-        {
-            FatalIOError << ' ' << valid;
-        }
-        FatalIOError << exit(FatalIOError);
-    }
-    return cstrIter()(coupling, rho, tangential);
+    load.rejectUnknown(validKeys());
+    return dictionaryConstructorTablePtr_->cfind(type)()(load, rho);
 }
 
 

@@ -22,13 +22,12 @@ namespace clothLoads
 
 Foam::clothLoads::ibForce::ibForce
 (
-    const dictionary& coupling,
-    const scalar rho,
-    const bool tangential
+    const scopedEntryReader& load,
+    const scalar rho
 )
 :
     clothLoad(rho),
-    tangential_(tangential)
+    tangential_(load.flag("tangential", false))
 {}
 
 

@@ -22,19 +22,20 @@ namespace clothLoads
 
 Foam::clothLoads::sampled::sampled
 (
-    const dictionary& coupling,
-    const scalar rho,
-    const bool tangential
+    const scopedEntryReader& load,
+    const scalar rho
 )
 :
     clothLoad(rho)
 {
-    if (tangential)
+    if (load.flag("tangential", false))
     {
-        FatalIOErrorInFunction(coupling)
-            << "Entry 'coupling.tangentialLoad' = true needs"
-            << " 'coupling.pressureJump' = ibForce (the tangential load is"
-            << " the rest of the markers' IB force)" << exit(FatalIOError);
+        load.fail
+        (
+            "tangential",
+            "= true needs '" + load.name("type") + "' = ibForce (the"
+            " tangential load is the rest of the markers' IB force)"
+        );
     }
 }
 
