@@ -166,7 +166,6 @@ Foam::canopyCoupling::canopyCoupling(const fvMesh& mesh)
 
     // The files; on a restart the structure's state at the start time
     // and the coupling's (null when there is none)
-    const Time& runTime = mesh.time();
     output_.reset(new couplingOutput(mesh, structure_, rho_));
     const autoPtr<IOdictionary> state(output_->readState());
 
@@ -204,19 +203,9 @@ Foam::canopyCoupling::canopyCoupling(const fvMesh& mesh)
 
     // The IB force is carried by the markers; a restart reads it and the
     // parts' states
-    if (runTime.value() != 0)
+    if (state.valid())
     {
-        if (state.valid())
-        {
-            readState(state());
-        }
-        else
-        {
-            WarningInFunction
-                << "No " << output_->statePath() << ": the immersed-boundary"
-                << " force restarts from zero and the frame from the payload"
-                << endl;
-        }
+        readState(state());
     }
     frame_->startAt(structure_.time());
     const string problem(placeMarkers());
@@ -234,17 +223,13 @@ Foam::canopyCoupling::canopyCoupling(const fvMesh& mesh)
     }
     force_->spread();
 
-    Info<< "canopyCoupling: structure of " << structure_.nNodes()
-        << " nodes, total mass " << structure_.totalMass() << " kg, canopy"
-        << " area " << structure_.canopyArea() << " m^2, nominal diameter "
-        << output_->nominalDiameter() << " m" << nl
-        << "canopyCoupling: " << (strong_ ? "strong" : "explicit")
+    output_->writeInfo(Info);
+    Info<< "canopyCoupling: " << (strong_ ? "strong" : "explicit")
         << " coupling, ";
     ib_->writeInfo(Info);
     if (lineDrag_.valid())
     {
-        Info<< ", line drag at " << lineDrag_->size() << " points ("
-            << lineDrag_->nOutside() << " outside the mesh)";
+        lineDrag_->writeInfo(Info);
     }
     frame_->writeInfo(Info);
     Info<< nl << endl;
@@ -300,28 +285,13 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
         return false;
     }
 
-    // The load on the cloth (clothLoad): the pressure jump per marker,
-    // then per triangle, and a tangential force per marker, to the nodes
-    const canopyMarkers& mk = ib_->markers();
-    scalarField dpMarker;
+    // The load on the cloth (clothLoad) from p and the markers: the
+    // pressure jump per triangle and the tangential force on the nodes
+    scalarField dp;
+    vectorField tangentialNodal;
     {
         sectionTimer timer(ibSeconds_);
-        dpMarker = load_->pressureJump
-        (
-            mk, ib_->markerForces(), ib_->plusStencil(), ib_->minusStencil(),
-            p
-        );
-    }
-    step_.load = sum(dpMarker*mk.areas()*mk.normals());
-    vectorField tangentialNodal;
-    if (load_->tangential())
-    {
-        const vectorField tangential
-        (
-            load_->tangentialForces(mk, ib_->markerForces())
-        );
-        step_.load += sum(tangential);
-        tangentialNodal = mk.toNodes(tangential);
+        step_.load = load_->onCloth(ib_(), p, dp, tangentialNodal);
     }
 
     // The secondary part of the iterate this solve reads (besides the
@@ -334,7 +304,7 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
     {
         sectionTimer timer(structureSeconds_);
         structure_.restore();
-        structure_.setPressureJump(mk.triangleAverage(dpMarker));
+        structure_.setPressureJump(dp);
         setNodalForces(tangentialNodal);
         advanced =
             structure_.tryAdvance

@@ -106,8 +106,16 @@ Foam::fileName Foam::couplingOutput::statePath() const
 Foam::autoPtr<Foam::IOdictionary> Foam::couplingOutput::readState() const
 {
     IOobject io(stateIO(IOobject::MUST_READ));
-    if (mesh_.time().value() == 0 || !io.typeHeaderOk<IOdictionary>(true))
+    if (mesh_.time().value() == 0)
     {
+        return nullptr;
+    }
+    if (!io.typeHeaderOk<IOdictionary>(true))
+    {
+        WarningInFunction
+            << "No " << statePath() << ": the immersed-boundary"
+            << " force restarts from zero and the frame from the payload"
+            << endl;
         return nullptr;
     }
     return autoPtr<IOdictionary>(new IOdictionary(io));
@@ -182,6 +190,15 @@ void Foam::couplingOutput::writeSeries(const stepSummary& step)
         << ' ' << l.x() << ' ' << l.y() << ' ' << l.z()
         << ' ' << centre.x() << ' ' << centre.y() << ' ' << centre.z()
         << endl;
+}
+
+
+void Foam::couplingOutput::writeInfo(Ostream& os) const
+{
+    os  << "canopyCoupling: structure of " << structure_.nNodes()
+        << " nodes, total mass " << structure_.totalMass() << " kg, canopy"
+        << " area " << structure_.canopyArea() << " m^2, nominal diameter "
+        << nominalDiameter_ << " m" << nl;
 }
 
 

@@ -95,6 +95,13 @@ Foam::label Foam::lineDrag::nOutside() const
 }
 
 
+void Foam::lineDrag::writeInfo(Ostream& os) const
+{
+    os  << ", line drag at " << size() << " points (" << nOutside()
+        << " outside the mesh)";
+}
+
+
 void Foam::lineDrag::place(const canopy_model* model, const vector& origin)
 {
     const int n = canopy_model_node_count(model);

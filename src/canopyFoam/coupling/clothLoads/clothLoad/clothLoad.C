@@ -34,4 +34,32 @@ Foam::tmp<Foam::vectorField> Foam::clothLoad::tangentialForces
 }
 
 
+Foam::vector Foam::clothLoad::onCloth
+(
+    const ibForcing& ib,
+    const volScalarField& p,
+    scalarField& dpTriangle,
+    vectorField& tangentialNodal
+) const
+{
+    const canopyMarkers& mk = ib.markers();
+    const scalarField dpMarker
+    (
+        pressureJump
+        (
+            mk, ib.markerForces(), ib.plusStencil(), ib.minusStencil(), p
+        )
+    );
+    vector load = sum(dpMarker*mk.areas()*mk.normals());
+    if (tangential())
+    {
+        const vectorField t(tangentialForces(mk, ib.markerForces()));
+        load += sum(t);
+        tangentialNodal = mk.toNodes(t);
+    }
+    dpTriangle = mk.triangleAverage(dpMarker);
+    return load;
+}
+
+
 // ************************************************************************* //
