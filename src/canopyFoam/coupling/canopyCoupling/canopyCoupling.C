@@ -5,39 +5,6 @@
 
 #include "canopyCoupling.H"
 
-// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
-
-namespace
-{
-
-// The coupling's entries that now live in a part's sub-dictionary: each
-// stops naming its new place and how to write it there
-void rejectMovedEntries(const Foam::scopedEntryReader& coupling)
-{
-    coupling.rejectMovedInto
-    ({
-        {"kernel", "forcing", "kernel", ""},
-        {"markerSpacing", "forcing", "markerSpacing", ""},
-        {"forcingIterations", "forcing", "iterations", ""},
-        {"tangential", "forcing", "tangential", ""},
-        {"pressureOffset", "forcing", "pressureOffset", ""},
-        {"pressureJump", "load", "type", ""},
-        {"tangentialLoad", "load", "tangential", "type ibForce; "},
-        {"acceleration", "acceleration", "type", ""},
-        {"initialRelaxation", "acceleration", "initial", "type aitken; "},
-        {"maxRelaxation", "acceleration", "max", "type aitken; "},
-        {"reuse", "acceleration", "reuse", "type IQN-ILS; "},
-        {"filter", "acceleration", "filter", "type IQN-ILS; "},
-        {"addedMass", "addedMass", "mass", ""},
-        {"addedMassPredictor", "addedMass", "predictor", "mass ..; "},
-        {"addedMassBalance", "addedMass", "balance", "mass ..; "},
-        {"addedMassDirection", "addedMass", "direction", "mass ..; "},
-    });
-}
-
-} // End anonymous namespace
-
-
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 Foam::string Foam::canopyCoupling::placeMarkers()
@@ -45,8 +12,11 @@ Foam::string Foam::canopyCoupling::placeMarkers()
     // A trial structure state at t + dt is seen from the frame's origin at
     // t + dt (canopyFrame::originAt)
     sectionTimer timer(ibSeconds_);
-    ib_->place(structure_.model(), frame_->originAt(structure_.time()));
-    return ib_->updateStencils();
+    parts_->forcing().place
+    (
+        structure_.model(), parts_->frame().originAt(structure_.time())
+    );
+    return parts_->forcing().updateStencils();
 }
 
 
@@ -54,40 +24,40 @@ void Foam::canopyCoupling::returnToStepStart()
 {
     // A failed step: every part back to the step's start (the last good
     // state written next is then the state the step started from)
-    addedMass_->returnToStepStart();
-    acceleration_->discardStep();
+    parts_->addedMass().returnToStepStart();
+    parts_->acceleration().discardStep();
     structure_.restore();
     placeMarkers();
-    ib_->returnToStepStart();
-    force_->spread();
+    parts_->forcing().returnToStepStart();
+    parts_->force().spread();
 }
 
 
 void Foam::canopyCoupling::setNodalForces(const vectorField& tangential)
 {
-    if (addedMass_->active())
+    if (parts_->addedMass().active())
     {
         structure_.setNodalForces
         (
-            "addedMassBalance", addedMass_->balancingForces()
+            "addedMassBalance", parts_->addedMass().balancingForces()
         );
     }
-    if (load_->tangential())
+    if (parts_->load().tangential())
     {
         structure_.setNodalForces("tangentialLoad", tangential);
     }
-    if (lineDrag_.valid())
+    if (lineDrag* lines = parts_->lineDragPtr())
     {
         // From the air's current velocity and the lines at the step's
         // start (the sample points were placed there)
-        lineDrag_->compute
+        lines->compute
         (
             mesh_.lookupObject<volVectorField>(UName_), structure_.model(),
-            frame_->velocity(), rho_
+            parts_->frame().velocity(), rho_
         );
         labelList nodes;
         vectorField forces;
-        lineDrag_->nodalForces(nodes, forces);
+        lines->nodalForces(nodes, forces);
         structure_.setNodalForces("lineDrag", nodes, forces);
     }
 }
@@ -97,12 +67,13 @@ void Foam::canopyCoupling::setNodalForces(const vectorField& tangential)
 
 Foam::wordList Foam::canopyCoupling::validKeys()
 {
-    return
+    wordList keys
     {
         "scheme", "rho", "tolerance", "Uref", "residualNorm",
-        "stopIfNotConverged", "restartFluid", "U",
-        "forcing", "load", "acceleration", "addedMass", "lineDrag", "frame"
+        "stopIfNotConverged", "restartFluid", "U"
     };
+    keys.append(couplingParts::subDictionaries());
+    return keys;
 }
 
 
@@ -113,7 +84,6 @@ Foam::canopyCoupling::canopyCoupling(const fvMesh& mesh)
     step_{Zero, 0, 0, 0, 0, Zero, Zero},
     structureSolves_(0),
     converged_(false),
-    runStartTime_(mesh.time().startTime().value()),
     structureSeconds_(0),
     ibSeconds_(0)
 {
@@ -127,7 +97,7 @@ Foam::canopyCoupling::canopyCoupling(const fvMesh& mesh)
     (
         scopedEntryReader(structure_.dict(), "").optionalSubReader("coupling")
     );
-    rejectMovedEntries(coupling);
+    couplingParts::rejectMovedEntries(coupling);
     coupling.rejectUnknown(validKeys());
 
     strong_ =
@@ -147,71 +117,22 @@ Foam::canopyCoupling::canopyCoupling(const fvMesh& mesh)
     stopIfNotConverged_ = coupling.flag("stopIfNotConverged", true);
     restartFluid_ = coupling.flag("restartFluid", false);
     UName_ = coupling.wordValue("U", "velocity field name", "U");
-    load_ = clothLoad::New(coupling.optionalSubReader("load"), rho_);
-    addedMass_.reset
+
+    // The parts, with a restart's state (the IB force is carried by the
+    // markers); the markers and the lines where the structure is
+    parts_.reset
     (
-        new addedMassStabiliser
-        (
-            coupling.optionalSubReader("addedMass"), structure_
-        )
+        new couplingParts(coupling, rho_, mesh, structure_, ibSeconds_)
     );
-    acceleration_ =
-        interfaceAcceleration::New(coupling.optionalSubReader("acceleration"));
-    frame_ =
-        canopyFrame::New(coupling.optionalSubReader("frame"), mesh, structure_);
     iterate_.reset
     (
-        new interfaceIterate(structure_, frame_(), tolerance, Uref, rms)
+        new interfaceIterate(structure_, parts_->frame(), tolerance, Uref, rms)
     );
-
-    // The files; on a restart the structure's state at the start time
-    // and the coupling's (null when there is none)
-    output_.reset(new couplingOutput(mesh, structure_, rho_));
-    const autoPtr<IOdictionary> state(output_->readState());
-
-    // The markers on the canopy, their stencils and forces: with a
-    // restart's subdivision levels (so that its markers match the forces
-    // it carries)
-    ib_.reset
-    (
-        new ibForcing
-        (
-            coupling.optionalSubReader("forcing"), mesh, structure_,
-            state.valid()
-          ? state->getOrDefault<labelList>("markerLevels", labelList())
-          : labelList()
-        )
-    );
-    if (coupling.optionalDict("lineDrag"))
-    {
-        lineDrag_.reset
-        (
-            new lineDrag
-            (
-                coupling.optionalSubReader("lineDrag"), mesh, ib_->kernel(),
-                structure_.model(), ib_->spacing()
-            )
-        );
-    }
-    force_.reset
-    (
-        new couplingForce
-        (
-            mesh, ib_(), lineDrag_.get(), frame_(), rho_, ibSeconds_
-        )
-    );
-
-    // The IB force is carried by the markers; a restart reads it and the
-    // parts' states
-    if (state.valid())
-    {
-        readState(state());
-    }
-    frame_->startAt(structure_.time());
+    parts_->frame().startAt(structure_.time());
     const string problem(placeMarkers());
-    if (lineDrag_.valid())
+    if (lineDrag* lines = parts_->lineDragPtr())
     {
-        lineDrag_->place(structure_.model(), frame_->origin());
+        lines->place(structure_.model(), parts_->frame().origin());
     }
 
     // Interface velocity from the structure's initial state
@@ -221,17 +142,12 @@ Foam::canopyCoupling::canopyCoupling(const fvMesh& mesh)
         FatalErrorInFunction
             << "At the start: " << problem.c_str() << exit(FatalError);
     }
-    force_->spread();
+    parts_->force().spread();
 
-    output_->writeInfo(Info);
+    parts_->output().writeInfo(Info);
     Info<< "canopyCoupling: " << (strong_ ? "strong" : "explicit")
         << " coupling, ";
-    ib_->writeInfo(Info);
-    if (lineDrag_.valid())
-    {
-        lineDrag_->writeInfo(Info);
-    }
-    frame_->writeInfo(Info);
+    parts_->writeInfo(Info);
     Info<< nl << endl;
 }
 
@@ -240,12 +156,12 @@ Foam::canopyCoupling::canopyCoupling(const fvMesh& mesh)
 
 void Foam::canopyCoupling::beginTimeStep(volVectorField& U)
 {
-    if (frame_->beginStep(U))
+    if (parts_->frame().beginStep(U))
     {
         // The interface velocities relative to the frame's new velocity;
         // the fictitious force changed with its acceleration
         iterate_->fromStructure();
-        force_->frameChanged();
+        parts_->force().frameChanged();
     }
     beginTimeStep();
 }
@@ -255,10 +171,10 @@ void Foam::canopyCoupling::beginTimeStep()
 {
     failure_.clear();
     structure_.checkpoint();
-    frame_->startAt(structure_.time());
-    addedMass_->beginStep(structure_);
-    ib_->beginStep();
-    acceleration_->reset();
+    parts_->frame().startAt(structure_.time());
+    parts_->addedMass().beginStep(structure_);
+    parts_->forcing().beginStep();
+    parts_->acceleration().reset();
     step_.iterations = 0;
     structureSolves_ = 0;
     converged_ = false;
@@ -269,7 +185,7 @@ void Foam::canopyCoupling::beginTimeStep()
 void Foam::canopyCoupling::forcingIncrement(const volVectorField& U)
 {
     step_.slip =
-        force_->forcingIncrement
+        parts_->force().forcingIncrement
         (
             U, iterate_->normalVelocity(), iterate_->velocity(),
             iterate_->Uref()
@@ -291,12 +207,13 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
     vectorField tangentialNodal;
     {
         sectionTimer timer(ibSeconds_);
-        step_.load = load_->onCloth(ib_(), p, dp, tangentialNodal);
+        step_.load =
+            parts_->load().onCloth(parts_->forcing(), p, dp, tangentialNodal);
     }
 
     // The secondary part of the iterate this solve reads (besides the
     // normal velocity): the stabiliser's balance and the no-slip velocity
-    iterate_->hold(addedMass_());
+    iterate_->hold(parts_->addedMass());
 
     // The structure's time step from its start under these loads
     string message;
@@ -313,7 +230,7 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
             );
         if (advanced)
         {
-            addedMass_->update(structure_, mesh_.time().deltaTValue());
+            parts_->addedMass().update(structure_, mesh_.time().deltaTValue());
         }
     }
     if (!advanced)
@@ -328,7 +245,11 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
     ++structureSolves_;
 
     // The residual, the convergence decision and the next iterate
-    converged_ = iterate_->update(strong_, acceleration_(), addedMass_());
+    converged_ =
+        iterate_->update
+        (
+            strong_, parts_->acceleration(), parts_->addedMass()
+        );
     step_.residual = iterate_->residual();
 
     const string problem(placeMarkers());
@@ -348,17 +269,18 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
     const bool stop = strong_ && converged_;
     if (strong_ && !stop)
     {
-        ib_->returnToStepStart();
+        parts_->forcing().returnToStepStart();
     }
-    force_->spread();
+    parts_->force().spread();
 
     // The iteration's line in the log
-    const vector drag(lineDrag_.valid() ? lineDrag_->total() : vector::zero);
-    output_->logIteration
+    const lineDrag* lines = parts_->lineDragPtr();
+    const vector drag(lines ? lines->total() : vector::zero);
+    parts_->output().logIteration
     (
-        step_, iterate_->worst(), acceleration_->describe(),
-        load_->tangential(), rho_*ib_->totalForce(),
-        lineDrag_.valid() ? &drag : nullptr
+        step_, iterate_->worst(), parts_->acceleration().describe(),
+        parts_->load().tangential(), rho_*parts_->forcing().totalForce(),
+        lines ? &drag : nullptr
     );
 
     return stop;
@@ -369,7 +291,10 @@ bool Foam::canopyCoupling::endTimeStep()
 {
     if (!failed() && strong_ && !converged_)
     {
-        const string text(output_->notConverged(step_, iterate_->tolerance()));
+        const string text
+        (
+            parts_->output().notConverged(step_, iterate_->tolerance())
+        );
         if (stopIfNotConverged_)
         {
             failure_ = text;
@@ -383,13 +308,13 @@ bool Foam::canopyCoupling::endTimeStep()
     // The frame moves on with the step; the markers with it
     const bool frameMoved =
         !failed()
-     && frame_->moveOn(mesh_.time().deltaTValue(), structure_.time());
+     && parts_->frame().moveOn(mesh_.time().deltaTValue(), structure_.time());
     if (frameMoved)
     {
         const string problem(placeMarkers());
         if (!problem.empty())
         {
-            frame_->undoMove();
+            parts_->frame().undoMove();
             failure_ =
                 "at t = " + mesh_.time().timeName() + " (frame moved), "
               + problem;
@@ -399,7 +324,7 @@ bool Foam::canopyCoupling::endTimeStep()
     if (failed())
     {
         // Back to the last good state (the start of this step)
-        frame_->returnToStepStart();
+        parts_->frame().returnToStepStart();
         returnToStepStart();
         structure_.commit();
         return false;
@@ -409,27 +334,28 @@ bool Foam::canopyCoupling::endTimeStep()
         sectionTimer timer(structureSeconds_);
         structure_.commit();
     }
-    if (lineDrag_.valid())
+    lineDrag* lines = parts_->lineDragPtr();
+    if (lines)
     {
         // The reaction acts from where the lines are now (and where the
         // next step's drag is computed): a restart, which knows only this
         // state, places it the same way
         sectionTimer timer(ibSeconds_);
-        lineDrag_->place(structure_.model(), frame_->origin());
+        lines->place(structure_.model(), parts_->frame().origin());
     }
-    if (frameMoved || lineDrag_.valid())
+    if (frameMoved || lines)
     {
         // The force from the markers' and the lines' new places
-        force_->spread();
+        parts_->force().spread();
     }
 
     // The next step starts from the committed structure's interface
     // velocity (not the relaxed iterate), so that a restart, which knows
     // only the structure's state, continues exactly
     iterate_->normalFromStructure();
-    step_.frameOrigin = frame_->origin();
-    step_.lineDrag = lineDrag_.valid() ? lineDrag_->total() : vector::zero;
-    output_->writeSeries(step_);
+    step_.frameOrigin = parts_->frame().origin();
+    step_.lineDrag = lines ? lines->total() : vector::zero;
+    parts_->output().writeSeries(step_);
     if (mesh_.time().writeTime())
     {
         writeStructure();
@@ -440,44 +366,16 @@ bool Foam::canopyCoupling::endTimeStep()
 
 // * * * * * * * * * * * * * * * Restart state  * * * * * * * * * * * * * * //
 
-void Foam::canopyCoupling::readState(const IOdictionary& state)
-{
-    ib_->readState(state);
-    if (lineDrag_.valid())
-    {
-        lineDrag_->readState(state);
-    }
-    frame_->readState(state);
-    addedMass_->readState(state);
-    acceleration_->readState(state);
-    state.readIfPresent("runStartTime", runStartTime_);
-}
-
-
-void Foam::canopyCoupling::writeState(dictionary& state) const
-{
-    ib_->writeState(state);
-    frame_->writeState(state);
-    if (lineDrag_.valid())
-    {
-        lineDrag_->writeState(state);
-    }
-    addedMass_->writeState(state);
-    acceleration_->writeState(state);
-    state.add("runStartTime", runStartTime_);
-}
-
-
 void Foam::canopyCoupling::writeStructure()
 {
     {
         sectionTimer timer(structureSeconds_);
         // with a mesh that follows the payload, also in the mesh's frame
         // (canopy-frame.xdmf beside case.foam)
-        output_->write
+        parts_->output().write
         (
-            frame_->meshFrameOrigin(),
-            [this](dictionary& state) { writeState(state); }
+            parts_->frame().meshFrameOrigin(),
+            [this](dictionary& state) { parts_->writeState(state); }
         );
     }
     Info<< "canopyCoupling: wall time since the run started: structure "

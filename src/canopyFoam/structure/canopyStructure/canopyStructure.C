@@ -124,7 +124,8 @@ Foam::canopyStructure::canopyStructure
     lastWriteTime_(0),
     haveLastWrite_(false),
     warnedTime_(false),
-    initialVelocity_(Zero)
+    initialVelocity_(Zero),
+    nodalForcesChanged_(false)
 {
     {
         // A number beyond the double range (1e999) overflows in
@@ -192,7 +193,8 @@ Foam::canopyStructure::canopyStructure
     lastWriteTime_(0),
     haveLastWrite_(false),
     warnedTime_(false),
-    initialVelocity_(Zero)
+    initialVelocity_(Zero),
+    nodalForcesChanged_(false)
 {
     build(defaultGravity);
 }
@@ -512,8 +514,17 @@ void Foam::canopyStructure::setNodalForces
     c.set = true;
     c.nodes = nodes;
     c.forces = f;
+    nodalForcesChanged_ = true;
+}
 
-    vectorField sum(n, Zero);
+
+void Foam::canopyStructure::applyNodalForces()
+{
+    if (!nodalForcesChanged_)
+    {
+        return;
+    }
+    vectorField sum(nNodes(), Zero);
     bool first = true;
     for (const nodalContribution& part : nodalForces_)
     {
@@ -546,6 +557,7 @@ void Foam::canopyStructure::setNodalForces
         canopy_model_set_nodal_forces(model_.get(), raw(sum), sum.size()),
         FUNCTION_NAME, "canopy_model_set_nodal_forces"
     );
+    nodalForcesChanged_ = false;
 }
 
 
@@ -587,6 +599,7 @@ void Foam::canopyStructure::setDirectionalAddedMass
 
 Foam::label Foam::canopyStructure::advance(const scalar dt)
 {
+    applyNodalForces();
     int nSub = 0;
     check
     (
@@ -604,6 +617,7 @@ bool Foam::canopyStructure::tryAdvance
     string& message
 )
 {
+    applyNodalForces();
     int nSub = 0;
     const canopy_status st = canopy_model_advance(model_.get(), dt, &nSub);
     nSubSteps = nSub;
