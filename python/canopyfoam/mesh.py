@@ -54,7 +54,8 @@ def _value(case, dict_path, entry):
     dictionary has no such entry."""
     try:
         result = subprocess.run(
-            ["foamDictionary", "-entry", entry, "-value",
+            # (scoped with '/', which both OpenFOAM flavours read)
+            ["foamDictionary", "-entry", entry.replace(".", "/"), "-value",
              os.path.join(case, dict_path)],
             capture_output=True, text=True, check=False)
     except FileNotFoundError:
@@ -376,7 +377,7 @@ def make(case, cells_per_diameter=None, say=print):
     spec.n_cells = cell_count(case)
     edge = spec.edge_per_cell * spec.h
     result = subprocess.run(
-        ["foamDictionary", "-entry", "canopy.edgeLength", "-set", f"{edge:.6g}",
+        ["foamDictionary", "-entry", "canopy/edgeLength", "-set", f"{edge:.6g}",
          os.path.join(case, "constant/canopyProperties")],
         capture_output=True, text=True, check=False)
     if result.returncode != 0:

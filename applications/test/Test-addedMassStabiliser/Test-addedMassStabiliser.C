@@ -75,6 +75,7 @@ Usage
 #include "canopyStructure.H"
 #include "addedMassStabiliser.H"
 #include "testCheck.H"
+#include "canopyFoamCompat.H"
 
 using namespace Foam;
 
@@ -180,7 +181,7 @@ int main(int argc, char *argv[])
         " its energy stays bounded (-expect stable) or grows"
         " (-expect unstable)"
     );
-    argList::noFunctionObjects();
+    canopyCompat::noFunctionObjects();
     argList::addOption("expect", "stable|unstable", "The expected outcome");
     argList::addOption("iterations", "K", "Iterations per step (default 6)");
     argList::addOption("deltaT", "dt", "Time step [s] (default 0.02)");
@@ -193,16 +194,16 @@ int main(int argc, char *argv[])
     #include "setRootCase.H"
     #include "createTime.H"
 
-    const word expect(args.getOrDefault<word>("expect", ""));
+    const word expect(canopyCompat::argOrDefault<word>(args, "expect", ""));
     if (expect != "stable" && expect != "unstable" && expect != "balanced")
     {
         FatalErrorInFunction
             << "Option -expect must be stable, unstable or balanced, not '"
             << expect << "'" << exit(FatalError);
     }
-    const label nIterations = args.getOrDefault<label>("iterations", 6);
-    const scalar dt = args.getOrDefault<scalar>("deltaT", 0.02);
-    const scalar endTime = args.getOrDefault<scalar>("endTime", 2);
+    const label nIterations = canopyCompat::argOrDefault<label>(args, "iterations", 6);
+    const scalar dt = canopyCompat::argOrDefault<scalar>(args, "deltaT", 0.02);
+    const scalar endTime = canopyCompat::argOrDefault<scalar>(args, "endTime", 2);
     const label nSteps = label(endTime/dt + 0.5);
 
     const IOdictionary props
@@ -229,7 +230,7 @@ int main(int argc, char *argv[])
     }
     if (expect == "balanced")
     {
-        const scalar jump = args.getOrDefault<scalar>("pressureJump", 2);
+        const scalar jump = canopyCompat::argOrDefault<scalar>(args, "pressureJump", 2);
         canopyStructure reference(props);
         reference.setTime(0);
         return balancedRun(structure, reference, stabiliser, jump, dt, nSteps);

@@ -78,6 +78,7 @@ Usage
 #include <string>
 #include <utility>
 #include <vector>
+#include "canopyFoamCompat.H"
 
 using namespace Foam;
 
@@ -293,7 +294,7 @@ int main(int argc, char *argv[])
         "Read the folded initial state of constant/canopyProperties"
         " (initialState, from canopyFold) and check it; exit 1 on failure"
     );
-    argList::noFunctionObjects();
+    canopyCompat::noFunctionObjects();
     argList::addOption
     (
         "maxStretch", "eps", "Largest spring stretch allowed (default 0.01)"
@@ -313,11 +314,11 @@ int main(int argc, char *argv[])
     #include "setRootCase.H"
     #include "createTime.H"
 
-    const scalar maxStretch = args.getOrDefault<scalar>("maxStretch", 0.01);
+    const scalar maxStretch = canopyCompat::argOrDefault<scalar>(args, "maxStretch", 0.01);
     const scalar maxCompression =
-        args.getOrDefault<scalar>("maxCompression", 0.01);
+        canopyCompat::argOrDefault<scalar>(args, "maxCompression", 0.01);
     const scalar minReduction =
-        args.getOrDefault<scalar>("minMouthReduction", 0);
+        canopyCompat::argOrDefault<scalar>(args, "minMouthReduction", 0);
 
     canopyStructure flat(runTime, false);
     canopyStructure folded(runTime);
@@ -469,16 +470,16 @@ int main(int argc, char *argv[])
         Info<< nl << "The fold (system/canopyFoldDict):" << endl;
 
         const dictionary& region = foldDict.subDict("region");
-        const vector v0(foldDict.get<vector>("velocity"));
-        const scalar T = foldDict.get<scalar>("duration");
-        const scalar a = region.get<scalar>("radius");
-        const scalar aIn = region.getOrDefault<scalar>("innerRadius", 0);
+        const vector v0(canopyCompat::readValue<vector>(foldDict, "velocity"));
+        const scalar T = canopyCompat::readValue<scalar>(foldDict, "duration");
+        const scalar a = canopyCompat::readValue<scalar>(region, "radius");
+        const scalar aIn = region.lookupOrDefault<scalar>("innerRadius", 0);
         point c = flat.dict().subOrEmptyDict("canopy")
-            .getOrDefault<point>("centre", Zero);
+            .lookupOrDefault<point>("centre", Zero);
         region.readIfPresent("centre", c);
-        vector e = region.getOrDefault<vector>("axis", vector(0, 0, 1));
+        vector e = region.lookupOrDefault<vector>("axis", vector(0, 0, 1));
         e /= mag(e);
-        const bool hold = foldDict.getOrDefault<bool>("holdPayload", true);
+        const bool hold = foldDict.lookupOrDefault<bool>("holdPayload", true);
 
         // The driven nodes: canopy nodes, not fixed, inside at t = 0
         std::vector<int> groups(n), fixed(n);

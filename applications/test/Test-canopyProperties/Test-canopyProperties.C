@@ -58,6 +58,7 @@ Usage
 #include <cctype>
 #include <cmath>
 #include <vector>
+#include "canopyFoamCompat.H"
 
 using namespace Foam;
 
@@ -135,20 +136,20 @@ canopy_material materialOf
     const word& modulusKey
 )
 {
-    m.density = d.getOrDefault<scalar>(densityKey, m.density);
+    m.density = d.lookupOrDefault<scalar>(densityKey, m.density);
     if (d.found("stiffness"))
     {
-        m.stiffness = d.get<scalar>("stiffness");
+        m.stiffness = canopyCompat::readValue<scalar>(d, "stiffness");
     }
     else if (d.found(modulusKey))
     {
         m.stiffness = 0;
-        m.modulus = d.get<scalar>(modulusKey);
+        m.modulus = canopyCompat::readValue<scalar>(d, modulusKey);
     }
-    m.damping = d.getOrDefault<scalar>("damping", m.damping);
+    m.damping = d.lookupOrDefault<scalar>("damping", m.damping);
     if (d.found("law"))
     {
-        m.law = lawOf(d.get<word>("law"));
+        m.law = lawOf(canopyCompat::readValue<word>(d, "law"));
     }
     return m;
 }
@@ -187,11 +188,11 @@ canopy_model* buildReference
     canopy_model_create(&m);
 
     const dictionary& c = props.subDict("canopy");
-    const word type = c.get<word>("type");
-    const scalar edge = c.get<scalar>("edgeLength");
-    const vector centre = c.getOrDefault<vector>("centre", Zero);
+    const word type = canopyCompat::readValue<word>(c, "type");
+    const scalar edge = canopyCompat::readValue<scalar>(c, "edgeLength");
+    const vector centre = c.lookupOrDefault<vector>("centre", Zero);
     const dictionary lines = props.subOrEmptyDict("lines");
-    const label nLines = lines.getOrDefault<label>("number", 0);
+    const label nLines = lines.lookupOrDefault<label>("number", 0);
     const dictionary fabricDict = props.subOrEmptyDict("fabric");
     const canopy_material fabric = materialOf
     (
@@ -199,7 +200,7 @@ canopy_model* buildReference
         "tensileStiffness"
     );
     const dictionary tapesDict = props.subOrEmptyDict("radialTapes");
-    const bool tapes = tapesDict.getOrDefault<bool>("enabled", false);
+    const bool tapes = tapesDict.lookupOrDefault<bool>("enabled", false);
 
     e.type = type;
     e.arealDensity = fabric.density;
@@ -208,12 +209,12 @@ canopy_model* buildReference
     if (type == "flatCircular" || type == "parabolic")
     {
         canopy_circular_spec s = canopy_circular_spec_default();
-        s.diameter = c.get<scalar>("diameter");
-        s.vent_diameter = c.getOrDefault<scalar>("ventDiameter", 0);
-        s.height = type == "parabolic" ? c.get<scalar>("height") : 0;
+        s.diameter = canopyCompat::readValue<scalar>(c, "diameter");
+        s.vent_diameter = c.lookupOrDefault<scalar>("ventDiameter", 0);
+        s.height = type == "parabolic" ? canopyCompat::readValue<scalar>(c, "height") : 0;
         s.edge_length = edge;
         for (direction d = 0; d < 3; ++d) s.center[d] = centre[d];
-        s.n_attachments = c.getOrDefault<label>
+        s.n_attachments = c.lookupOrDefault<label>
         (
             "nAttachments", nLines > 0 ? nLines : s.n_attachments
         );
@@ -239,11 +240,11 @@ canopy_model* buildReference
     else if (type == "cross")
     {
         canopy_cross_spec s = canopy_cross_spec_default();
-        s.span = c.get<scalar>("span");
-        s.arm_width = c.get<scalar>("armWidth");
+        s.span = canopyCompat::readValue<scalar>(c, "span");
+        s.arm_width = canopyCompat::readValue<scalar>(c, "armWidth");
         s.edge_length = edge;
         for (direction d = 0; d < 3; ++d) s.center[d] = centre[d];
-        s.n_attachments = c.getOrDefault<label>
+        s.n_attachments = c.lookupOrDefault<label>
         (
             "nAttachments", nLines > 0 ? nLines : s.n_attachments
         );
@@ -256,8 +257,8 @@ canopy_model* buildReference
     else
     {
         canopy_rectangle_spec s = canopy_rectangle_spec_default();
-        s.width = c.get<scalar>("width");
-        s.length = c.get<scalar>("length");
+        s.width = canopyCompat::readValue<scalar>(c, "width");
+        s.length = canopyCompat::readValue<scalar>(c, "length");
         s.edge_length = edge;
         s.origin[0] = centre.x() - s.width/2;
         s.origin[1] = centre.y() - s.length/2;
@@ -269,7 +270,7 @@ canopy_model* buildReference
     }
 
     // Rim: nodes of edges that belong to one triangle only, without a vent's
-    if (props.subOrEmptyDict("fixedNodes").getOrDefault<bool>("skirt", false))
+    if (props.subOrEmptyDict("fixedNodes").lookupOrDefault<bool>("skirt", false))
     {
         const int nt = canopy_model_triangle_count(m);
         const int n = canopy_model_node_count(m);
@@ -295,7 +296,7 @@ canopy_model* buildReference
         }
         const bool circ = (type == "flatCircular" || type == "parabolic");
         const scalar rCut = circ
-            ? 0.25*(c.get<scalar>("diameter") + c.getOrDefault<scalar>("ventDiameter", 0))
+            ? 0.25*(canopyCompat::readValue<scalar>(c, "diameter") + c.lookupOrDefault<scalar>("ventDiameter", 0))
             : 0;
         for (int a = 0; a < n; ++a)
         {
@@ -321,14 +322,14 @@ canopy_model* buildReference
     if (nLines > 0)
     {
         canopy_lines_spec ls = canopy_lines_spec_default();
-        ls.line_length = lines.get<scalar>("length");
-        ls.edge_length = lines.getOrDefault<scalar>("edgeLength", edge);
+        ls.line_length = canopyCompat::readValue<scalar>(lines, "length");
+        ls.edge_length = lines.lookupOrDefault<scalar>("edgeLength", edge);
         ls.line = materialOf
         (
             lines, canopy_material_line_default(), "linearDensity", "EA"
         );
         const dictionary& payload = props.subDict("payload");
-        ls.payload_mass = payload.get<scalar>("mass");
+        ls.payload_mass = canopyCompat::readValue<scalar>(payload, "mass");
         e.lineDensity = ls.line.density;
         e.payloadMass = ls.payload_mass;
         int pn = -1;
@@ -341,14 +342,14 @@ canopy_model* buildReference
             ),
             "canopy_build_suspension_lines"
         );
-        if (payload.getOrDefault<bool>("fixed", false))
+        if (payload.lookupOrDefault<bool>("fixed", false))
         {
             canopy_model_set_fixed(m, pn, 1);
         }
         payloadNode = pn;
     }
 
-    const vector g = props.getOrDefault<vector>("gravity", gDefault);
+    const vector g = props.lookupOrDefault<vector>("gravity", gDefault);
     const double ga[3] = {g.x(), g.y(), g.z()};
     ok(m, canopy_model_set_gravity(m, ga), "canopy_model_set_gravity");
 
@@ -357,17 +358,17 @@ canopy_model* buildReference
     const dictionary guide = props.subOrEmptyDict("guideWire");
     if (props.found("guideWire"))
     {
-        const vector dir = guide.getOrDefault<vector>("direction", g);
+        const vector dir = guide.lookupOrDefault<vector>("direction", g);
         const double axis[3] = {dir.x(), dir.y(), dir.z()};
-        if (guide.getOrDefault<bool>("payload", true) && payloadNode >= 0)
+        if (guide.lookupOrDefault<bool>("payload", true) && payloadNode >= 0)
         {
             ok(m, canopy_model_set_guide(m, payloadNode, axis),
                "canopy_model_set_guide");
         }
-        if (guide.getOrDefault<bool>("apex", true))
+        if (guide.lookupOrDefault<bool>("apex", true))
         {
             const vector c =
-                props.subDict("canopy").getOrDefault<vector>("centre", Zero);
+                props.subDict("canopy").lookupOrDefault<vector>("centre", Zero);
             const int n = canopy_model_node_count(m);
             List<double> x(3*n);
             List<int> group(n);
@@ -395,8 +396,8 @@ canopy_model* buildReference
         m,
         canopy_model_set_porosity
         (
-            m, por.getOrDefault<scalar>("alpha", 0),
-            por.getOrDefault<scalar>("beta", 0)
+            m, por.lookupOrDefault<scalar>("alpha", 0),
+            por.lookupOrDefault<scalar>("beta", 0)
         ),
         "canopy_model_set_porosity"
     );
@@ -405,7 +406,7 @@ canopy_model* buildReference
         m,
         canopy_model_set_bending_damping
         (
-            m, fabricDict.getOrDefault<scalar>("bendingDamping", 0)
+            m, fabricDict.lookupOrDefault<scalar>("bendingDamping", 0)
         ),
         "canopy_model_set_bending_damping"
     );
@@ -415,7 +416,7 @@ canopy_model* buildReference
         canopy_model_set_bending_damping_implicit
         (
             m,
-            fabricDict.getOrDefault<word>("bendingDampingScheme", "explicit")
+            fabricDict.lookupOrDefault<word>("bendingDampingScheme", "explicit")
          == "implicit"
         ),
         "canopy_model_set_bending_damping_implicit"
@@ -426,7 +427,7 @@ canopy_model* buildReference
         canopy_model_set_bending_damping_filter
         (
             m,
-            fabricDict.getOrDefault<word>("bendingDampingFilter", "none")
+            fabricDict.lookupOrDefault<word>("bendingDampingFilter", "none")
          == "highPass"
         ),
         "canopy_model_set_bending_damping_filter"
@@ -436,7 +437,7 @@ canopy_model* buildReference
         m,
         canopy_model_set_fabric_compression
         (
-            m, fabricDict.getOrDefault<scalar>("compressionRatio", 1)
+            m, fabricDict.lookupOrDefault<scalar>("compressionRatio", 1)
         ),
         "canopy_model_set_fabric_compression"
     );
@@ -446,7 +447,7 @@ canopy_model* buildReference
         m,
         canopy_model_set_integrator
         (
-            m, integ.getOrDefault<word>("type", "rk4").c_str()
+            m, integ.lookupOrDefault<word>("type", "rk4").c_str()
         ),
         "canopy_model_set_integrator"
     );
@@ -455,14 +456,14 @@ canopy_model* buildReference
         m,
         canopy_model_set_max_omega_dt
         (
-            m, integ.getOrDefault<scalar>("maxOmegaDt", 0.1)
+            m, integ.lookupOrDefault<scalar>("maxOmegaDt", 0.1)
         ),
         "canopy_model_set_max_omega_dt"
     );
     ok
     (
         m,
-        canopy_model_set_hht_alpha(m, integ.getOrDefault<scalar>("hhtAlpha", -0.1)),
+        canopy_model_set_hht_alpha(m, integ.lookupOrDefault<scalar>("hhtAlpha", -0.1)),
         "canopy_model_set_hht_alpha"
     );
     ok
@@ -470,8 +471,8 @@ canopy_model* buildReference
         m,
         canopy_model_set_implicit_controls
         (
-            m, integ.getOrDefault<scalar>("tolerance", 1e-10),
-            integ.getOrDefault<label>("maxIterations", 25)
+            m, integ.lookupOrDefault<scalar>("tolerance", 1e-10),
+            integ.lookupOrDefault<label>("maxIterations", 25)
         ),
         "canopy_model_set_implicit_controls"
     );
@@ -480,7 +481,7 @@ canopy_model* buildReference
         m,
         canopy_model_set_speed_limit
         (
-            m, integ.getOrDefault<scalar>("speedLimit", 1e4)
+            m, integ.lookupOrDefault<scalar>("speedLimit", 1e4)
         ),
         "canopy_model_set_speed_limit"
     );
@@ -613,8 +614,8 @@ void compareModels(const canopy_model* a, canopy_model* b)
 label checkRim(const canopyStructure& structure, const dictionary& props)
 {
     const dictionary& c = props.subDict("canopy");
-    const word type = c.get<word>("type");
-    const vector o = c.getOrDefault<vector>("centre", Zero);
+    const word type = canopyCompat::readValue<word>(c, "type");
+    const vector o = c.lookupOrDefault<vector>("centre", Zero);
     const pointField x(structure.points());
     std::vector<int> fixed(x.size()), group(x.size());
     canopy_model_get_fixed(structure.model(), fixed.data(), x.size());
@@ -633,18 +634,18 @@ label checkRim(const canopyStructure& structure, const dictionary& props)
         bool rim = false;
         if (type == "flatCircular" || type == "parabolic")
         {
-            rim = near(std::hypot(dx, dy), c.get<scalar>("diameter")/2);
+            rim = near(std::hypot(dx, dy), canopyCompat::readValue<scalar>(c, "diameter")/2);
         }
         else if (type == "rectangle")
         {
-            const scalar w = c.get<scalar>("width")/2;
-            const scalar l = c.get<scalar>("length")/2;
+            const scalar w = canopyCompat::readValue<scalar>(c, "width")/2;
+            const scalar l = canopyCompat::readValue<scalar>(c, "length")/2;
             rim = near(mag(dx), w) || near(mag(dy), l);
         }
         else
         {
-            const scalar s = c.get<scalar>("span")/2;
-            const scalar w = c.get<scalar>("armWidth")/2;
+            const scalar s = canopyCompat::readValue<scalar>(c, "span")/2;
+            const scalar w = canopyCompat::readValue<scalar>(c, "armWidth")/2;
             const scalar ax = mag(dx), ay = mag(dy);
             rim =
                 near(ax, s) || near(ay, s)
@@ -675,7 +676,7 @@ int main(int argc, char *argv[])
         "Build the canopy of constant/canopyProperties and check it against"
         " libcanopy's C API; exit 1 on any mismatch"
     );
-    argList::noFunctionObjects();
+    canopyCompat::noFunctionObjects();
     argList::addOption("steps", "N", "Steps to advance (default 3)");
     argList::addOption("deltaT", "dt", "Step [s] (default 1e-3)");
     argList::addOption("dp", "Pa", "Uniform pressure jump (default 40)");
@@ -689,9 +690,9 @@ int main(int argc, char *argv[])
     #include "setRootCase.H"
     #include "createTime.H"
 
-    const label nSteps = args.getOrDefault<label>("steps", 3);
-    const scalar dt = args.getOrDefault<scalar>("deltaT", 1e-3);
-    const scalar dpValue = args.getOrDefault<scalar>("dp", 40);
+    const label nSteps = canopyCompat::argOrDefault<label>(args, "steps", 3);
+    const scalar dt = canopyCompat::argOrDefault<scalar>(args, "deltaT", 1e-3);
+    const scalar dpValue = canopyCompat::argOrDefault<scalar>(args, "dp", 40);
 
     // ---- the structure, as a solver builds it ------------------------------
 
@@ -738,10 +739,7 @@ int main(int argc, char *argv[])
             );
             if
             (
-                gIO.typeHeaderOk<uniformDimensionedVectorField>
-                (
-                    true, true, false
-                )
+                canopyCompat::headerOk<uniformDimensionedVectorField>(gIO)
             )
             {
                 gDefault = uniformDimensionedVectorField(gIO).value();
@@ -757,7 +755,7 @@ int main(int argc, char *argv[])
         );
         expected e;
         canopy_model* ref = buildReference(props, gDefault, e);
-        if (args.found("perturbReference"))
+        if (canopyCompat::argFound(args, "perturbReference"))
         {
             Info<< "(-perturbReference: node 0 of the reference is 1e-9 kg"
                 << " heavier)" << endl;
@@ -809,7 +807,7 @@ int main(int argc, char *argv[])
             if
             (
                 props.subOrEmptyDict("fixedNodes")
-                    .getOrDefault<bool>("skirt", false)
+                    .lookupOrDefault<bool>("skirt", false)
             )
             {
                 checkRim(structure, props);

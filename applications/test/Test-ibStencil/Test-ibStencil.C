@@ -81,7 +81,6 @@ Usage
 #include "fvMesh.H"
 #include "volFields.H"
 #include "testCheck.H"
-#include "Random.H"
 #include "OFstream.H"
 #include "deltaKernel.H"
 #include "ibStencil.H"
@@ -92,10 +91,37 @@ Usage
 #include <algorithm>
 #include <cmath>
 #include <chrono>
+#include <random>
+#include "canopyFoamCompat.H"
 
 using namespace Foam;
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+// Uniform random vectors in [0, 1)^3 from a seed (the C++ library's
+// generator: the same markers with either OpenFOAM flavour)
+class uniformSampler
+{
+    std::mt19937 generator_;
+    std::uniform_real_distribution<double> uniform_;
+
+public:
+
+    explicit uniformSampler(const label seed)
+    :
+        generator_(seed),
+        uniform_(0, 1)
+    {}
+
+    vector sample01()
+    {
+        const scalar x = uniform_(generator_);
+        const scalar y = uniform_(generator_);
+        const scalar z = uniform_(generator_);
+        return vector(x, y, z);
+    }
+};
+
 
 namespace
 {
@@ -479,25 +505,25 @@ struct testFields
     :
         Uconst
         (
-            IOobject("Uconst", mesh.time().timeName(), mesh),
+            IOobject("Uconst", canopyCompat::timeName(mesh.time()), mesh),
             mesh,
             dimensionedVector("Uconst", dimless, vector(1.3, -0.7, 2.1))
         ),
         Ulin
         (
-            IOobject("Ulin", mesh.time().timeName(), mesh),
+            IOobject("Ulin", canopyCompat::timeName(mesh.time()), mesh),
             mesh,
             dimensionedVector("zero", dimless, Zero)
         ),
         plin
         (
-            IOobject("plin", mesh.time().timeName(), mesh),
+            IOobject("plin", canopyCompat::timeName(mesh.time()), mesh),
             mesh,
             dimensionedScalar("zero", dimless, Zero)
         ),
         q
         (
-            IOobject("q", mesh.time().timeName(), mesh),
+            IOobject("q", canopyCompat::timeName(mesh.time()), mesh),
             mesh,
             dimensionedVector("zero", dimless, Zero)
         )
@@ -538,7 +564,7 @@ void checkStencil
     const testFields& tf,
     const scalar tol,
     const scalar minStraddle,
-    Random& rnd,
+    uniformSampler& rnd,
     OFstream* osPtr
 )
 {
@@ -673,7 +699,7 @@ void checkStencil
     vectorField F(N);
     forAll(F, m)
     {
-        F[m] = 2*rnd.sample01<vector>() - vector::one;
+        F[m] = 2*rnd.sample01() - vector::one;
     }
     vectorField f(mesh.nCells(), Zero);
     st.spread(F, f);
@@ -793,11 +819,11 @@ void testKernel
     const vector margin(3*maxCellSpan(mesh));
     const Vector<label>& geomD = mesh.geometricD();
 
-    Random rnd(seed);
+    uniformSampler rnd(seed);
     pointField X(nMarkers);
     forAll(X, m)
     {
-        const vector s(rnd.sample01<vector>());
+        const vector s(rnd.sample01());
         for (direction d = 0; d < 3; ++d)
         {
             X[m][d] =
@@ -823,7 +849,7 @@ void testKernel
         pointField Xm(X);
         forAll(Xm, m)
         {
-            const vector s(2*rnd.sample01<vector>() - vector::one);
+            const vector s(2*rnd.sample01() - vector::one);
             Xm[m] += 0.4*cmptMultiply(s, st.spacing()[m]);
         }
         ibStencil fresh(mesh, kernel);
@@ -849,7 +875,7 @@ void testKernel
         vector v(Zero);
         while (mag(v) < 0.1)
         {
-            v = 2*rnd.sample01<vector>() - vector::one;
+            v = 2*rnd.sample01() - vector::one;
             for (direction d = 0; d < 3; ++d)
             {
                 if (geomD[d] != 1)
@@ -920,7 +946,7 @@ void testKernel
         pointField Xw(nMarkers/4 + 1);
         forAll(Xw, m)
         {
-            const vector s(rnd.sample01<vector>());
+            const vector s(rnd.sample01());
             for (direction d = 0; d < 3; ++d)
             {
                 Xw[m][d] =
@@ -959,7 +985,7 @@ void testKernel
     pointField Xn(Xi);
     forAll(Xn, m)
     {
-        Xn[m] += hi[m]*(2*rnd.sample01<vector>() - vector::one);
+        Xn[m] += hi[m]*(2*rnd.sample01() - vector::one);
         for (direction d = 0; d < 3; ++d)
         {
             if (geomD[d] != 1)
@@ -1144,7 +1170,7 @@ int main(int argc, char *argv[])
         "Verify the immersed-boundary stencils (deltaKernel, ibStencil);"
         " exits non-zero when a check fails"
     );
-    argList::noFunctionObjects();
+    canopyCompat::noFunctionObjects();
     argList::addOption("kernel", "name", "Test only this kernel");
     argList::addOption("markers", "N", "Number of random markers (1000)");
     argList::addOption("seed", "N", "Random seed (1912)");
@@ -1170,36 +1196,36 @@ int main(int argc, char *argv[])
     #include "setRootCase.H"
     #include "createTime.H"
 
-    Info<< "Create mesh for time = " << runTime.timeName() << nl << endl;
+    Info<< "Create mesh for time = " << canopyCompat::timeName(runTime) << nl << endl;
     fvMesh mesh
     (
         IOobject
         (
             fvMesh::defaultRegion,
-            runTime.timeName(),
+            canopyCompat::timeName(runTime),
             runTime,
             IOobject::MUST_READ
         )
     );
 
-    const testFields tf(mesh, args.found("perturb"));
+    const testFields tf(mesh, canopyCompat::argFound(args, "perturb"));
 
-    if (args.found("timing"))
+    if (canopyCompat::argFound(args, "timing"))
     {
-        timeOperations(mesh, args.get<label>("timing"), tf);
+        timeOperations(mesh, canopyCompat::argRead<label>(args, "timing"), tf);
         Info<< nl << "End" << nl << endl;
         return 0;
     }
 
-    const label nMarkers = args.getOrDefault<label>("markers", 1000);
-    const label seed = args.getOrDefault<label>("seed", 1912);
-    const scalar tol = args.getOrDefault<scalar>("tol", 1e-10);
-    const scalar minStraddle = args.getOrDefault<scalar>("straddle", -1);
+    const label nMarkers = canopyCompat::argOrDefault<label>(args, "markers", 1000);
+    const label seed = canopyCompat::argOrDefault<label>(args, "seed", 1912);
+    const scalar tol = canopyCompat::argOrDefault<scalar>(args, "tol", 1e-10);
+    const scalar minStraddle = canopyCompat::argOrDefault<scalar>(args, "straddle", -1);
 
     wordList kernels;
-    if (args.found("kernel"))
+    if (canopyCompat::argFound(args, "kernel"))
     {
-        kernels = wordList(1, args.get<word>("kernel"));
+        kernels = wordList(1, canopyCompat::argRead<word>(args, "kernel"));
     }
     else
     {
@@ -1208,9 +1234,9 @@ int main(int argc, char *argv[])
 
     const fileName outputName
     (
-        args.getOrDefault<fileName>
+        canopyCompat::argOrDefault<fileName>
         (
-            "output",
+            args, "output",
             runTime.globalPath()
            /("Test-ibStencil.np" + Foam::name(Pstream::nProcs()) + ".dat")
         )

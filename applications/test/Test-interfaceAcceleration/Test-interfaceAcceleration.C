@@ -51,6 +51,7 @@ Usage
 #include "aitkenRelaxation.H"
 #include "IStringStream.H"
 #include "OStringStream.H"
+#include "canopyFoamCompat.H"
 
 using namespace Foam;
 
@@ -178,9 +179,9 @@ int main(int argc, char *argv[])
     );
     argList args(argc, argv, false, false);
 
-    if (args.found("select"))
+    if (canopyCompat::argFound(args, "select"))
     {
-        const dictionary dict(IStringStream(args.get<string>("select"))());
+        const dictionary dict(IStringStream(canopyCompat::argRead<string>(args, "select"))());
         autoPtr<interfaceAcceleration> acc
         (
             interfaceAcceleration::New
@@ -192,8 +193,8 @@ int main(int argc, char *argv[])
         return 0;
     }
 
-    const label n = args.getOrDefault<label>("n", 24);
-    const scalar lambdaMax = args.getOrDefault<scalar>("lambdaMax", 140);
+    const label n = canopyCompat::argOrDefault<label>(args, "n", 24);
+    const scalar lambdaMax = canopyCompat::argOrDefault<scalar>(args, "lambdaMax", 140);
     const scalar tol = 1e-8;
 
     linearProblem P;

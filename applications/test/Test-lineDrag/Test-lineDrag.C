@@ -51,6 +51,7 @@ Description
 #include "deltaKernel.H"
 #include "lineDrag.H"
 #include "canopy.h"
+#include "canopyFoamCompat.H"
 
 using namespace Foam;
 
@@ -223,7 +224,7 @@ void expectBadEntry
 
 int main(int argc, char *argv[])
 {
-    argList::noFunctionObjects();
+    canopyCompat::noFunctionObjects();
     argList::addBoolOption
     (
         "perturb",
@@ -236,13 +237,13 @@ int main(int argc, char *argv[])
         IOobject
         (
             fvMesh::defaultRegion,
-            runTime.timeName(),
+            canopyCompat::timeName(runTime),
             runTime,
             IOobject::MUST_READ
         )
     );
 
-    if (args.found("perturb"))
+    if (canopyCompat::argFound(args, "perturb"))
     {
         CdUsed = Cd*(1 + 1e-6);
     }
@@ -253,7 +254,7 @@ int main(int argc, char *argv[])
 
     volVectorField U
     (
-        IOobject("U", runTime.timeName(), mesh),
+        IOobject("U", canopyCompat::timeName(runTime), mesh),
         mesh,
         dimensionedVector("U0", dimVelocity, vector(U0, 0, 0))
     );

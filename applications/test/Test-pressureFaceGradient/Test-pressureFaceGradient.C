@@ -28,9 +28,17 @@ Usage
 
 \*---------------------------------------------------------------------------*/
 
-#include "fvCFD.H"
+#include "argList.H"
+#include "Time.H"
+#include "fvMesh.H"
+#include "volFields.H"
+#include "surfaceFields.H"
+#include "fvc.H"
 #include "pressureFaceGradient.H"
 #include "testCheck.H"
+#include "canopyFoamCompat.H"
+
+using namespace Foam;
 
 // Largest |a - b| over internal and boundary faces, and largest |b|
 static void compare
@@ -72,19 +80,28 @@ int main(int argc, char *argv[])
     );
     #include "setRootCase.H"
     #include "createTime.H"
-    #include "createMesh.H"
+    fvMesh mesh
+    (
+        IOobject
+        (
+            fvMesh::defaultRegion,
+            canopyCompat::timeName(runTime),
+            runTime,
+            IOobject::MUST_READ
+        )
+    );
 
-    if (!args.found("nonOrthogonal"))
+    if (!canopyCompat::argFound(args, "nonOrthogonal"))
     {
         FatalErrorInFunction
             << "option -nonOrthogonal true|false is required" << exit(FatalError);
     }
-    const bool expectNonOrth = args.get<bool>("nonOrthogonal");
+    const bool expectNonOrth = canopyCompat::argRead<bool>(args, "nonOrthogonal");
 
     // A smooth nonlinear pressure, also on the boundary faces
     volScalarField p
     (
-        IOobject("p", runTime.timeName(), mesh),
+        IOobject("p", canopyCompat::timeName(runTime), mesh),
         mesh,
         dimensionedScalar(dimPressure, Zero),
         calculatedFvPatchScalarField::typeName

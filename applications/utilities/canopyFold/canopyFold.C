@@ -34,6 +34,7 @@ See also
 #include "IOdictionary.H"
 #include "canopyStructure.H"
 #include "canopyFold.H"
+#include "canopyFoamCompat.H"
 
 using namespace Foam;
 
@@ -48,7 +49,7 @@ int main(int argc, char *argv[])
         " folded state for canopyProperties' initialState"
     );
     argList::noParallel();
-    argList::noFunctionObjects();
+    canopyCompat::noFunctionObjects();
     #include "addDictOption.H"
 
     #include "setRootCase.H"
@@ -58,9 +59,33 @@ int main(int argc, char *argv[])
     // entry, which may name the file written here, is not applied)
     canopyStructure structure(runTime, false);
 
+    // system/canopyFoldDict, or the file (or the folder's canopyFoldDict)
+    // that -dict names
     const word dictName("canopyFoldDict");
-    #include "setSystemRunTimeDictionaryIO.H"
-    const IOdictionary foldDict(dictIO);
+    fileName dictPath;
+    if (canopyCompat::argFound(args, "dict"))
+    {
+        dictPath = canopyCompat::argRead<fileName>(args, "dict");
+        dictPath.expand();
+        if (isDir(dictPath))
+        {
+            dictPath /= dictName;
+        }
+    }
+    const IOdictionary foldDict
+    (
+        dictPath.empty()
+      ? IOobject
+        (
+            dictName, runTime.system(), runTime,
+            IOobject::MUST_READ, IOobject::NO_WRITE
+        )
+      : IOobject
+        (
+            dictPath.isAbsolute() ? dictPath : runTime.path()/dictPath,
+            runTime, IOobject::MUST_READ, IOobject::NO_WRITE
+        )
+    );
 
     canopyFold fold(structure, foldDict, runTime);
     fold.run();

@@ -5,6 +5,7 @@
 
 #include "addedMassStabiliser.H"
 #include "canopyStructure.H"
+#include "canopyFoamCompat.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -202,7 +203,7 @@ void Foam::addedMassStabiliser::readState(const dictionary& state)
             << " restart is zero" << endl;
         return;
     }
-    const vectorField balance(state.get<vectorField>("addedMassBalance"));
+    const vectorField balance(canopyCompat::readValue<vectorField>(state, "addedMassBalance"));
     if (balance.size() != balanceAcceleration_.size())
     {
         FatalIOErrorInFunction(state)

@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "canopyCoupling.H"
+#include "canopyFoamCompat.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -236,7 +237,7 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
     if (!advanced)
     {
         failure_ =
-            "the structure's time step to t = " + mesh_.time().timeName()
+            "the structure's time step to t = " + canopyCompat::timeName(mesh_.time())
           + " failed (coupling iteration " + Foam::name(step_.iterations)
           + "): " + message;
         converged_ = true;
@@ -255,7 +256,7 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
     const string problem(placeMarkers());
     if (!problem.empty())
     {
-        failure_ = "at t = " + mesh_.time().timeName() + ", " + problem;
+        failure_ = "at t = " + canopyCompat::timeName(mesh_.time()) + ", " + problem;
         // Markers and stencils back at the step's start for what follows
         returnToStepStart();
         converged_ = true;
@@ -316,7 +317,7 @@ bool Foam::canopyCoupling::endTimeStep()
         {
             parts_->frame().undoMove();
             failure_ =
-                "at t = " + mesh_.time().timeName() + " (frame moved), "
+                "at t = " + canopyCompat::timeName(mesh_.time()) + " (frame moved), "
               + problem;
         }
     }

@@ -6,6 +6,7 @@
 #include "couplingForce.H"
 #include "surfaceInterpolate.H"
 #include "sectionTimer.H"
+#include "canopyFoamCompat.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -30,7 +31,7 @@ Foam::couplingForce::couplingForce
         IOobject
         (
             "canopyForce",
-            mesh.time().timeName(),
+            canopyCompat::timeName(mesh.time()),
             mesh,
             IOobject::NO_READ,
             IOobject::AUTO_WRITE

@@ -6,6 +6,7 @@
 #include "couplingOutput.H"
 #include "canopy.h"
 #include "mathematicalConstants.H"
+#include "canopyFoamCompat.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -17,7 +18,7 @@ Foam::IOobject Foam::couplingOutput::stateIO
     return IOobject
     (
         "canopyCoupling",
-        mesh_.time().timeName(),
+        canopyCompat::timeName(mesh_.time()),
         "uniform",
         mesh_,
         r,
@@ -75,19 +76,19 @@ Foam::couplingOutput::couplingOutput
     if (structure.startsFrom(runTime) == canopyStructure::origin::restart)
     {
         Info<< "canopyCoupling: restarting the structure from its state"
-            << " at t = " << runTime.timeName() << " in "
+            << " at t = " << canopyCompat::timeName(runTime) << " in "
             << canopyStructure::outputPath(runTime) << ".h5" << endl;
         structure.readState(runTime);
     }
     else if (runTime.value() != 0)
     {
         WarningInFunction
-            << "No structure state at the start time " << runTime.timeName()
+            << "No structure state at the start time " << canopyCompat::timeName(runTime)
             << " in " << canopyStructure::outputPath(runTime) << ".h5:"
             << " the canopy starts from its initial shape" << endl;
     }
     nominalDiameter_ =
-        structure.dict().subOrEmptyDict("canopy").getOrDefault<scalar>
+        structure.dict().subOrEmptyDict("canopy").lookupOrDefault<scalar>
         (
             "diameter",
             Foam::sqrt(4*structure.canopyArea()/constant::mathematical::pi)
@@ -108,15 +109,15 @@ Foam::autoPtr<Foam::IOdictionary> Foam::couplingOutput::readState() const
     IOobject io(stateIO(IOobject::MUST_READ));
     if (mesh_.time().value() == 0)
     {
-        return nullptr;
+        return autoPtr<IOdictionary>();
     }
-    if (!io.typeHeaderOk<IOdictionary>(true))
+    if (!canopyCompat::headerOk<IOdictionary>(io))
     {
         WarningInFunction
             << "No " << statePath() << ": the immersed-boundary"
             << " force restarts from zero and the frame from the payload"
             << endl;
-        return nullptr;
+        return autoPtr<IOdictionary>();
     }
     return autoPtr<IOdictionary>(new IOdictionary(io));
 }
@@ -239,7 +240,7 @@ Foam::string Foam::couplingOutput::notConverged
 ) const
 {
     return
-        "the coupling did not converge at t = " + mesh_.time().timeName()
+        "the coupling did not converge at t = " + canopyCompat::timeName(mesh_.time())
       + " in " + Foam::name(step.iterations) + " iterations (residual "
       + Foam::name(step.residual) + ", slip " + Foam::name(step.slip)
       + ", tolerance " + Foam::name(tolerance) + ")";

@@ -85,7 +85,7 @@ Foam::couplingParts::couplingParts
         (
             coupling.optionalSubReader("forcing"), mesh, structure,
             state.valid()
-          ? state->getOrDefault<labelList>("markerLevels", labelList())
+          ? state->lookupOrDefault<labelList>("markerLevels", labelList())
           : labelList()
         )
     );

@@ -6,6 +6,7 @@
 #include "ibForcing.H"
 #include "treeDataCell.H"
 #include "indexedOctree.H"
+#include "canopyFoamCompat.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -30,7 +31,7 @@ void Foam::ibForcing::reportCoarseMarkers(const vectorField& h)
     }
     if (coarse != coarseMarkers_)
     {
-        Info<< "canopyCoupling: t = " << mesh_.time().timeName() << ": "
+        Info<< "canopyCoupling: t = " << canopyCompat::timeName(mesh_.time()) << ": "
             << coarse << " of " << h.size() << " markers lie in cells"
             << " coarser than the finest at the canopy (" << finest
             << " m)" << (coarse ? ": the canopy reaches past the finest"
@@ -306,7 +307,7 @@ void Foam::ibForcing::writeState(dictionary& dict) const
 
 void Foam::ibForcing::readState(const dictionary& dict)
 {
-    const vectorField F(dict.get<vectorField>("markerForce"));
+    const vectorField F(canopyCompat::readValue<vectorField>(dict, "markerForce"));
     if (F.size() != markerForce_.size())
     {
         FatalIOErrorInFunction(dict)

@@ -32,7 +32,7 @@ Foam::autoPtr<Foam::interfaceAcceleration> Foam::interfaceAcceleration::New
             "= " + scopedEntryReader::format(omega0) + " must lie in (0, 1]"
         );
     }
-    return dictionaryConstructorTablePtr_->cfind(type)()(acceleration, omega0);
+    return (*dictionaryConstructorTablePtr_)[type](acceleration, omega0);
 }
 
 

@@ -7,6 +7,7 @@
 #include "UPtrList.H"
 #include "SubList.H"
 #include "addToRunTimeSelectionTable.H"
+#include "canopyFoamCompat.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -315,11 +316,11 @@ void Foam::interfaceQuasiNewton::readState(const dictionary& dict)
     }
     const List<List<scalarField>> pastV
     (
-        dict.get<List<List<scalarField>>>("quasiNewtonV")
+        canopyCompat::readValue<List<List<scalarField>>>(dict, "quasiNewtonV")
     );
     const List<List<scalarField>> pastW
     (
-        dict.get<List<List<scalarField>>>("quasiNewtonW")
+        canopyCompat::readValue<List<List<scalarField>>>(dict, "quasiNewtonW")
     );
     // Written before the secondary data: empty columns, which only an
     // iteration without secondary data uses
@@ -330,7 +331,7 @@ void Foam::interfaceQuasiNewton::readState(const dictionary& dict)
     }
     if (dict.found("quasiNewtonWs"))
     {
-        pastWs = dict.get<List<List<scalarField>>>("quasiNewtonWs");
+        pastWs = canopyCompat::readValue<List<List<scalarField>>>(dict, "quasiNewtonWs");
     }
     bool fits =
         pastV.size() == pastW.size() && pastV.size() == pastWs.size()

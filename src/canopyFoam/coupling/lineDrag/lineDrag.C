@@ -216,7 +216,7 @@ void Foam::lineDrag::readState(const dictionary& state)
 {
     const vectorField f
     (
-        state.getOrDefault<vectorField>("lineDragForce", vectorField())
+        state.lookupOrDefault<vectorField>("lineDragForce", vectorField())
     );
     if (f.size() != size())
     {

@@ -5,6 +5,7 @@
 
 #include "pressureFaceGradient.H"
 #include "snGradScheme.H"
+#include "canopyFoamCompat.H"
 
 Foam::scalar Foam::largestNonOrthCorrection(const fvMesh& mesh)
 {
@@ -38,7 +39,10 @@ Foam::tmp<Foam::surfaceScalarField> Foam::pressureFaceGradient
     const word name("snGrad(" + p.name() + ')');
     tmp<fv::snGradScheme<scalar>> scheme
     (
-        fv::snGradScheme<scalar>::New(mesh, mesh.snGradScheme(name))
+        fv::snGradScheme<scalar>::New
+        (
+            mesh, canopyCompat::snGradScheme(mesh, name)
+        )
     );
 
     // snGradScheme::snGrad(p) is this uncorrected part plus, for a

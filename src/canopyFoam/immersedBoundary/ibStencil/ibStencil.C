@@ -8,7 +8,6 @@
 #include "treeDataCell.H"
 #include "treeDataPoint.H"
 #include "treeBoundBox.H"
-#include "Random.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -275,12 +274,14 @@ Foam::ibStencil::centreTree()
         centreTree_.clear();
         treeCentres_ = mesh_.cellCentres();
 
-        // As polyMesh::cellTree(): a slightly extended, randomly perturbed
-        // box, so that octant planes do not fall on cell centres
-        Random rndGen(261782);
-        treeBoundBox bb(treeBoundBox(treeCentres_).extend(rndGen, 1e-4));
-        bb.min() -= point::uniform(ROOTVSMALL);
-        bb.max() += point::uniform(ROOTVSMALL);
+        // The centres' box, extended by 1e-4 of its diagonal by unequal
+        // irrational multiples per side and axis, so that octant planes do
+        // not fall on the cell centres of a regular mesh (which box the
+        // tree has changes only its shape: the candidates are sorted)
+        treeBoundBox bb(treeCentres_);
+        const scalar delta = 1e-4*mag(bb.span()) + ROOTVSMALL;
+        bb.min() -= delta*vector(1.6180339887, 1.4142135624, 1.3027756377);
+        bb.max() += delta*vector(1.2360679775, 1.7320508076, 1.4494897428);
 
         centreTree_.reset
         (

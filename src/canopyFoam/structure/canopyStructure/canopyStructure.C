@@ -24,6 +24,7 @@ License
 #include <cstdint>
 #include <cstring>
 #include <type_traits>
+#include "canopyFoamCompat.H"
 
 // * * * * * * * * * * * * * * * * Static Data  * * * * * * * * * * * * * * //
 
@@ -162,7 +163,7 @@ Foam::canopyStructure::canopyStructure
         IOobject::NO_WRITE,
         false
     );
-    if (gIO.typeHeaderOk<uniformDimensionedVectorField>(true, true, false))
+    if (canopyCompat::headerOk<uniformDimensionedVectorField>(gIO))
     {
         g = uniformDimensionedVectorField(gIO).value();
     }

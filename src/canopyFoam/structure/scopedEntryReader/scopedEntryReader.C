@@ -14,7 +14,7 @@ License
 
 #include "scopedEntryReader.H"
 #include "OStringStream.H"
-#include "FlatOutput.H"
+#include "canopyFoamCompat.H"
 #include "Switch.H"
 
 #include <cmath>
@@ -66,7 +66,7 @@ Foam::scopedEntryReader::scopedEntryReader
 
 const Foam::entry* Foam::scopedEntryReader::find(const word& key) const
 {
-    return dict_.findEntry(key, keyType::LITERAL);
+    return canopyCompat::findLiteral(dict_, key);
 }
 
 
@@ -102,7 +102,7 @@ const Foam::token& Foam::scopedEntryReader::single
         (
             key,
             "must be a single value (" + what + "), found "
-          + std::to_string(is.size()) + " tokens: " + is.toString()
+          + std::to_string(is.size()) + " tokens: " + canopyCompat::joinTokens(is)
         );
     }
     return is[0];
@@ -169,15 +169,14 @@ std::string Foam::scopedEntryReader::given(const word& key) const
     {
         return format(is[0].number());
     }
-    return is.empty() ? std::string("(empty)") : std::string(is.toString());
+    return is.empty() ? std::string("(empty)") : canopyCompat::joinTokens(is);
 }
 
 
 bool Foam::scopedEntryReader::switchValue(const token& tok, bool& value)
 {
-    if (tok.isBool())
+    if (canopyCompat::boolToken(tok, value))
     {
-        value = tok.boolToken();
         return true;
     }
     if (tok.isWord())
@@ -219,7 +218,7 @@ void Foam::scopedEntryReader::warnUnused
             IOWarningInFunction(dict_)
                 << "Entry '" << name(key).c_str() << "' is not used"
                 << context.c_str() << " and is ignored. Valid entries here: "
-                << flatOutput(used) << endl;
+                << "(" << spaced(used).c_str() << ")" << endl;
         }
     }
 }
@@ -477,7 +476,7 @@ Foam::vector Foam::scopedEntryReader::vectorValue
         fail
         (
             key,
-            "must be a vector (x y z) (" + what + "), found " + is.toString()
+            "must be a vector (x y z) (" + what + "), found " + canopyCompat::joinTokens(is)
         );
     }
     const vector v(is[1].number(), is[2].number(), is[3].number());
@@ -598,11 +597,11 @@ Foam::fileName Foam::scopedEntryReader::fileNameWithExt
 ) const
 {
     const token& tok = single(key, what);
-    if (!tok.isStringType())
+    if (!tok.isWord() && !tok.isString())
     {
         fail(key, "must be a file name (" + what + "), found " + describe(tok));
     }
-    fileName file(tok.stringToken());
+    fileName file(tok.isWord() ? tok.wordToken() : tok.stringToken());
     file.expand();
     if (file.ext() != ext)
     {

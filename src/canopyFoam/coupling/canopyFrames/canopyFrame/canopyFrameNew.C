@@ -22,7 +22,7 @@ Foam::autoPtr<Foam::canopyFrame> Foam::canopyFrame::New
             "fixed"
         )
     );
-    return dictionaryConstructorTablePtr_->cfind(type)()
+    return (*dictionaryConstructorTablePtr_)[type]
     (
         frame, mesh, structure
     );

@@ -5,6 +5,7 @@
 #include "payload.H"
 #include "inletOutletFvPatchFields.H"
 #include "addToRunTimeSelectionTable.H"
+#include "canopyFoamCompat.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -82,7 +83,7 @@ Foam::canopyFrames::payload::payload
             "is missing (required: the far field's patches)"
         );
     }
-    const wordReList names(dict.get<wordReList>("inletPatches"));
+    const wordReList names(canopyCompat::readValue<wordReList>(dict, "inletPatches"));
     inletPatches_ = mesh.boundaryMesh().patchSet(names, false).sortedToc();
     if (inletPatches_.empty())
     {
@@ -169,8 +170,8 @@ void Foam::canopyFrames::payload::undoMove()
 
 void Foam::canopyFrames::payload::readState(const dictionary& dict)
 {
-    origin_ = dict.get<vector>("frameOrigin");
-    velocity_ = dict.get<vector>("frameVelocity");
+    origin_ = canopyCompat::readValue<vector>(dict, "frameOrigin");
+    velocity_ = canopyCompat::readValue<vector>(dict, "frameVelocity");
     velocityStart_ = velocity_;
 }
 

@@ -28,7 +28,7 @@ Foam::autoPtr<Foam::clothLoad> Foam::clothLoad::New
         )
     );
     load.rejectUnknown(validKeys());
-    return dictionaryConstructorTablePtr_->cfind(type)()(load, rho);
+    return (*dictionaryConstructorTablePtr_)[type](load, rho);
 }
 
 

@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "deltaKernel.H"
+#include "canopyFoamCompat.H"
 
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
 
@@ -12,9 +13,9 @@ Foam::autoPtr<Foam::deltaKernel> Foam::deltaKernel::New
     const word& kernelType
 )
 {
-    auto cstrIter = dictionaryConstructorTablePtr_->cfind(kernelType);
+    const auto cstrIter = dictionaryConstructorTablePtr_->find(kernelType);
 
-    if (!cstrIter.found())
+    if (cstrIter == dictionaryConstructorTablePtr_->end())
     {
         FatalErrorInFunction
             << "Unknown delta kernel '" << kernelType << "'" << nl << nl
@@ -37,13 +38,13 @@ Foam::autoPtr<Foam::deltaKernel> Foam::deltaKernel::New
     const word kernelType
     (
         defaultType.empty()
-      ? dict.get<word>(entryName)
-      : dict.getOrDefault<word>(entryName, defaultType)
+      ? canopyCompat::readValue<word>(dict, entryName)
+      : dict.lookupOrDefault<word>(entryName, defaultType)
     );
 
-    auto cstrIter = dictionaryConstructorTablePtr_->cfind(kernelType);
+    const auto cstrIter = dictionaryConstructorTablePtr_->find(kernelType);
 
-    if (!cstrIter.found())
+    if (cstrIter == dictionaryConstructorTablePtr_->end())
     {
         FatalIOErrorInFunction(dict)
             << "Unknown delta kernel '" << kernelType << "' in entry '"
