@@ -91,6 +91,7 @@ Usage
 #include <algorithm>
 #include <cmath>
 #include <chrono>
+#include <numeric>
 #include <random>
 #include "canopyFoamCompat.H"
 
@@ -320,7 +321,8 @@ void interfaceFaces
             keys[i][d] = std::round((C[i][d] - bb.min()[d])/quantum);
         }
     }
-    labelList order(identity(C.size()));
+    labelList order(C.size());
+    std::iota(order.begin(), order.end(), 0);
     std::sort
     (
         order.begin(),
@@ -378,8 +380,8 @@ void checkSelectionErrors()
 {
     Info<< "Kernel selection" << nl;
 
-    const bool throwing = FatalError.throwExceptions();
-    const bool ioThrowing = FatalIOError.throwExceptions();
+    canopyCompat::throwExceptions(FatalError, true);
+    canopyCompat::throwExceptions(FatalIOError, true);
 
     scalar bad = 0;
     try
@@ -450,8 +452,8 @@ void checkSelectionErrors()
     );
     check("wrong kernel selected from entry, default or name", ok ? 0 : 1, 0);
 
-    FatalError.throwExceptions(throwing);
-    FatalIOError.throwExceptions(ioThrowing);
+    canopyCompat::throwExceptions(FatalError, false);
+    canopyCompat::throwExceptions(FatalIOError, false);
 }
 
 
@@ -830,7 +832,7 @@ void testKernel
             (
                 geomD[d] == 1
               ? bb.min()[d] + margin[d] + s[d]*(bb.span()[d] - 2*margin[d])
-              : bb.centre()[d]
+              : bb.midpoint()[d]
             );
         }
     }
@@ -953,7 +955,7 @@ void testKernel
                 (
                     geomD[d] == 1
                   ? bb.min()[d] + (0.001 + 0.998*s[d])*bb.span()[d]
-                  : bb.centre()[d]
+                  : bb.midpoint()[d]
                 );
             }
         }
@@ -990,7 +992,7 @@ void testKernel
         {
             if (geomD[d] != 1)
             {
-                Xn[m][d] = bb.centre()[d];
+                Xn[m][d] = bb.midpoint()[d];
             }
         }
     }
@@ -1079,7 +1081,7 @@ void timeOperations(const fvMesh& mesh, const label N, const testFields& tf)
     };
 
     const boundBox& bb = mesh.bounds();
-    const point c(bb.centre());
+    const point c(bb.midpoint());
     const scalar R = 0.3*cmptMin(bb.span());
     const scalar golden = constant::mathematical::pi*(3 - Foam::sqrt(5.0));
 
@@ -1262,7 +1264,7 @@ int main(int argc, char *argv[])
         testKernel
         (
             mesh, kernelName, nMarkers, seed, tol, minStraddle, tf,
-            osPtr.valid() ? osPtr.get() : nullptr
+            osPtr.valid() ? &osPtr() : nullptr
         );
     }
 

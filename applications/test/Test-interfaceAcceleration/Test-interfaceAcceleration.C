@@ -167,7 +167,7 @@ static label solve
 int main(int argc, char *argv[])
 {
     argList::noParallel();
-    argList::noBanner();
+    canopyCompat::noBanner();
     argList::addOption("n", "N", "dimension of the interface (default 24)");
     argList::addOption("lambdaMax", "L", "added-mass ratio (default 140)");
     argList::addOption

@@ -179,7 +179,7 @@ void checkLine
     // Reaction on the air
     vectorField f(mesh.nCells(), Zero);
     drag.spreadReaction(f, rho);
-    const vector reaction = rho*gSum(f*mesh.V().field());
+    const vector reaction = rho*gSum(f*mesh.cellVolumes());
     check("|reaction + drag|/scale", mag(reaction + total)/scale, tol);
 }
 

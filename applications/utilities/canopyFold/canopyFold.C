@@ -69,7 +69,7 @@ int main(int argc, char *argv[])
         dictPath.expand();
         if (isDir(dictPath))
         {
-            dictPath /= dictName;
+            dictPath = dictPath/dictName;
         }
     }
     const IOdictionary foldDict

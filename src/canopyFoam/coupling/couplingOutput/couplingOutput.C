@@ -100,7 +100,7 @@ Foam::couplingOutput::couplingOutput
 
 Foam::fileName Foam::couplingOutput::statePath() const
 {
-    return stateIO(IOobject::NO_READ).objectPath();
+    return canopyCompat::objectPath(stateIO(IOobject::NO_READ));
 }
 
 

@@ -104,7 +104,7 @@ Foam::couplingParts::couplingParts
     (
         new couplingForce
         (
-            mesh, forcing_(), lineDrag_.get(), frame_(), rho, ibSeconds
+            mesh, forcing_(), lineDragPtr(), frame_(), rho, ibSeconds
         )
     );
 

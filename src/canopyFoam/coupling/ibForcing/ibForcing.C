@@ -141,7 +141,7 @@ Foam::ibForcing::ibForcing
         forcing.positive
         (
             "markerSpacing", "marker spacing [m]",
-            Foam::cbrt(gMin(mesh.V().field()))
+            Foam::cbrt(gMin(mesh.cellVolumes()))
         )
     ),
     totalForce_(Zero),

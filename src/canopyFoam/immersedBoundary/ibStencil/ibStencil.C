@@ -123,7 +123,7 @@ void pointsInBox
     using namespace Foam;
 
     const pointTreeType::node& nod = tree.nodes()[nodei];
-    const point mid(nod.bb_.centre());
+    const point mid(nod.bb_.midpoint());
 
     // Octant bit d set: upper half in direction d (treeBoundBox::RIGHTHALF,
     // TOPHALF, FRONTHALF). Which halves does the box reach?

@@ -60,7 +60,7 @@ Foam::tmp<Foam::Field<Type>> Foam::ibStencil::interpolate
     const GeometricField<Type, fvPatchField, volMesh>& vf
 ) const
 {
-    auto tresult = tmp<Field<Type>>::New(nMarkers_);
+    tmp<Field<Type>> tresult(new Field<Type>(nMarkers_));
     interpolate(vf.primitiveField(), tresult.ref());
     return tresult;
 }

@@ -29,6 +29,20 @@ License
 namespace
 {
 
+// path relative to the case folder, when it lies inside it
+Foam::fileName caseRelative
+(
+    const Foam::fileName& path,
+    const Foam::fileName& casePath
+)
+{
+    const std::string prefix(casePath + "/");
+    return path.compare(0, prefix.size(), prefix) == 0
+        ? Foam::fileName(path.substr(prefix.size()))
+        : path;
+}
+
+
 using namespace Foam;
 
 // Spring strains (l - l0)/l0: largest stretch of any spring (and which),
@@ -528,7 +542,7 @@ void Foam::canopyFold::run()
         << "    view               " << c_.output.lessExt().c_str() << ".xdmf"
         << nl
         << "    use                initialState \""
-        << c_.output.relative(runTime_.globalPath()).c_str() << "\"; in "
+        << caseRelative(c_.output, runTime_.globalPath()).c_str() << "\"; in "
         << "constant/canopyProperties" << nl << endl;
 
 }

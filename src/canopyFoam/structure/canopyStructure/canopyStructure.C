@@ -254,7 +254,7 @@ void Foam::canopyStructure::setTime(const scalar t)
 
 Foam::tmp<Foam::pointField> Foam::canopyStructure::points() const
 {
-    auto tfld = tmp<pointField>::New(nNodes());
+    tmp<pointField> tfld(new pointField(nNodes()));
     check
     (
         canopy_model_get_positions(model_.get(), raw(tfld.ref()), nNodes()),
@@ -266,7 +266,7 @@ Foam::tmp<Foam::pointField> Foam::canopyStructure::points() const
 
 Foam::tmp<Foam::vectorField> Foam::canopyStructure::velocities() const
 {
-    auto tfld = tmp<vectorField>::New(nNodes());
+    tmp<vectorField> tfld(new vectorField(nNodes()));
     check
     (
         canopy_model_get_velocities(model_.get(), raw(tfld.ref()), nNodes()),
@@ -278,7 +278,7 @@ Foam::tmp<Foam::vectorField> Foam::canopyStructure::velocities() const
 
 Foam::tmp<Foam::vectorField> Foam::canopyStructure::accelerationState() const
 {
-    auto tfld = tmp<vectorField>::New(nNodes(), Zero);
+    tmp<vectorField> tfld(new vectorField(nNodes(), Zero));
     int valid = 0;
     check
     (
@@ -302,7 +302,7 @@ Foam::tmp<Foam::vectorField> Foam::canopyStructure::accelerationState() const
 
 Foam::tmp<Foam::scalarField> Foam::canopyStructure::masses() const
 {
-    auto tfld = tmp<scalarField>::New(nNodes());
+    tmp<scalarField> tfld(new scalarField(nNodes()));
     check
     (
         canopy_model_get_masses(model_.get(), tfld.ref().begin(), nNodes()),
@@ -360,7 +360,7 @@ void Foam::canopyStructure::triangleGeometry
 
 Foam::tmp<Foam::pointField> Foam::canopyStructure::triangleCentres() const
 {
-    auto tfld = tmp<pointField>::New(nTriangles());
+    tmp<pointField> tfld(new pointField(nTriangles()));
     check
     (
         canopy_model_get_triangle_geometry
@@ -375,7 +375,7 @@ Foam::tmp<Foam::pointField> Foam::canopyStructure::triangleCentres() const
 
 Foam::tmp<Foam::vectorField> Foam::canopyStructure::triangleNormals() const
 {
-    auto tfld = tmp<vectorField>::New(nTriangles());
+    tmp<vectorField> tfld(new vectorField(nTriangles()));
     check
     (
         canopy_model_get_triangle_geometry
@@ -390,7 +390,7 @@ Foam::tmp<Foam::vectorField> Foam::canopyStructure::triangleNormals() const
 
 Foam::tmp<Foam::scalarField> Foam::canopyStructure::triangleAreas() const
 {
-    auto tfld = tmp<scalarField>::New(nTriangles());
+    tmp<scalarField> tfld(new scalarField(nTriangles()));
     check
     (
         canopy_model_get_triangle_geometry
@@ -405,7 +405,7 @@ Foam::tmp<Foam::scalarField> Foam::canopyStructure::triangleAreas() const
 
 Foam::tmp<Foam::vectorField> Foam::canopyStructure::triangleVelocities() const
 {
-    auto tfld = tmp<vectorField>::New(nTriangles());
+    tmp<vectorField> tfld(new vectorField(nTriangles()));
     check
     (
         canopy_model_get_triangle_velocities
@@ -420,7 +420,7 @@ Foam::tmp<Foam::vectorField> Foam::canopyStructure::triangleVelocities() const
 
 Foam::tmp<Foam::scalarField> Foam::canopyStructure::normalVelocities() const
 {
-    auto tfld = tmp<scalarField>::New(nTriangles());
+    tmp<scalarField> tfld(new scalarField(nTriangles()));
     check
     (
         canopy_model_get_normal_velocities
@@ -435,7 +435,7 @@ Foam::tmp<Foam::scalarField> Foam::canopyStructure::normalVelocities() const
 
 Foam::tmp<Foam::scalarField> Foam::canopyStructure::pressureJump() const
 {
-    auto tfld = tmp<scalarField>::New(nTriangles());
+    tmp<scalarField> tfld(new scalarField(nTriangles()));
     check
     (
         canopy_model_get_pressure_jump
@@ -485,7 +485,7 @@ void Foam::canopyStructure::setNodalForces
     const vectorField& f
 )
 {
-    const label slot = nodalForceNames().find(name);
+    const label slot = canopyCompat::indexOf(nodalForceNames(), name);
     const label n = nNodes();
     if (slot < 0)
     {
@@ -680,7 +680,7 @@ Foam::point Foam::canopyStructure::payloadPosition() const
     vector v(Zero);
     check
     (
-        canopy_model_payload_state(model_.get(), x.data(), v.data()),
+        canopy_model_payload_state(model_.get(), &x.x(), &v.x()),
         FUNCTION_NAME, "canopy_model_payload_state"
     );
     return x;
@@ -693,7 +693,7 @@ Foam::vector Foam::canopyStructure::payloadVelocity() const
     vector v(Zero);
     check
     (
-        canopy_model_payload_state(model_.get(), x.data(), v.data()),
+        canopy_model_payload_state(model_.get(), &x.x(), &v.x()),
         FUNCTION_NAME, "canopy_model_payload_state"
     );
     return v;

@@ -91,7 +91,7 @@ std::string stepGroupName(const int number)
 // path.h5 -> path, the form libcanopy takes
 std::string withoutH5(const Foam::fileName& h5)
 {
-    return h5.hasExt("h5") ? h5.lessExt() : h5;
+    return h5.ext() == "h5" ? h5.lessExt() : h5;
 }
 
 } // End anonymous namespace

@@ -213,7 +213,7 @@ void Foam::scopedEntryReader::warnUnused
 {
     for (const word& key : dict_.toc())
     {
-        if (!used.found(key))
+        if (!canopyCompat::contains(used, key))
         {
             IOWarningInFunction(dict_)
                 << "Entry '" << name(key).c_str() << "' is not used"
@@ -228,7 +228,7 @@ void Foam::scopedEntryReader::rejectUnknown(const wordList& valid) const
 {
     for (const word& key : dict_.toc())
     {
-        if (!valid.found(key))
+        if (!canopyCompat::contains(valid, key))
         {
             fail
             (
@@ -564,7 +564,7 @@ Foam::word Foam::scopedEntryReader::choice
         );
     }
     const word& w = tok.wordToken();
-    if (!valid.found(w))
+    if (!canopyCompat::contains(valid, w))
     {
         fail
         (
