@@ -305,21 +305,23 @@ REFINE_MESH_DICT = """/*--------------------------------*- C++ -*---------------
   the set in all three directions
 \\*---------------------------------------------------------------------------*/
 FoamFile
-{
+{{
     version     2.0;
     format      ascii;
     class       dictionary;
     object      refineMeshDict;
-}
+}}
 
 set             refine;
 coordinateSystem global;
 globalCoeffs
-{
-    tan1        (1 0 0);
+{{
+    tan1        (1 0 0);    // OpenFOAM v1912's names
     tan2        (0 1 0);
-}
-directions      (tan1 tan2 normal);
+    e1          (1 0 0);    // OpenFOAM-12's
+    e2          (0 1 0);
+}}
+directions      {directions};
 useHexTopology  true;
 geometricCut    false;
 writeMesh       false;
@@ -356,7 +358,11 @@ def make(case, cells_per_diameter=None, say=print):
     _write(case, "system/blockMeshDict.run", block_mesh_dict(spec))
     _run(case, "log.blockMesh",
          ["blockMesh", "-dict", "system/blockMeshDict.run"])
-    _write(case, "system/refineMeshDict.run", REFINE_MESH_DICT)
+    # the three directions by the names of the OpenFOAM sourced (the
+    # Foundation's releases number theirs)
+    foundation = not os.environ.get("WM_PROJECT_VERSION", "v").startswith("v")
+    _write(case, "system/refineMeshDict.run", REFINE_MESH_DICT.format(
+        directions="(e1 e2 e3)" if foundation else "(tan1 tan2 normal)"))
     for i in range(spec.levels):
         _write(case, f"system/topoSetDict.level{i + 1}", topo_set_dict(spec, i))
         _run(case, f"log.topoSet.level{i + 1}",
