@@ -1944,6 +1944,84 @@ COUPLING_NOTES += [
     'tutorials/parachutes/flatCircular7ft/README.md).', ""]
 
 
+# What precedes the long 7 ft runs' stop (study tolerance7ftLong), measured
+# by restarting 7ft-tol1e-3-relax1-40s from its written state at 27 s
+DIVERGENCE_NOTES = ["## The long 7 ft runs' stop: a growing oscillation "
+                    "at the time-step scale", ""]
+DIVERGENCE_NOTES += [
+    "Both long runs of study tolerance7ftLong stopped with the "
+    "structure's HHT step diverging (a node above the 100 m/s speed "
+    "limit). Restarted from its written state at 27 s, "
+    "`7ft-tol1e-3-relax1-40s` stops again at t = 27.2963 s, node 255 at "
+    "104.935 m/s, the same digits: the stop is deterministic and takes "
+    "three minutes to reproduce. What precedes it, over about 0.3 s "
+    "(the 40 s run at 37.4-37.65 s shows the same):", "",
+    "- the load on the cloth alternates with a period of two to three "
+    "time steps (about 30 ms, 35 Hz): the vertical force between 22 and "
+    "152 N (the weight is 56 N), sideways up to 43 N; the cloth's "
+    "spring energy swings between 1 and 9 J with it;",
+    "- the slip at the markers before the forcing (relative to the "
+    "largest normal velocity) rises from below 0.1 to 0.4-1.4, and the "
+    "coupling needs 8-35 iterations a step instead of 4-5;",
+    "- the nodes that pass the limit (255, 260, 261) are suspension-line "
+    "nodes (0.97 g each), whipped by the oscillating canopy.", ""]
+DIVERGENCE_NOTES += [
+    "Restarts from 27 s with one change each: 4 forcing iterations "
+    "instead of 2 stop at 27.317 s (no cure); maxCo 0.25 instead of 0.5 "
+    "stops sooner, at 27.039 s, so a smaller time step makes it worse, "
+    "the mark of an added-mass instability of the time discretisation "
+    "rather than of a Courant limit; residualNorm max instead of rms "
+    "makes the coupling take 15-34 iterations and miss 1e-3 in 40 at "
+    "27.106 s, and the steps that do converge show the same "
+    "oscillation, so the rms norm hiding unconverged triangles is not "
+    "the cause either. Open: the stabiliser's mass (0.54 kg/m², half a "
+    "broadside disc's) against the local added mass of the flapping "
+    "cloth, its endOfStep balance, and the lines' damping.", ""]
+
+
+# foamRun on OpenFOAM-12 against canopyPimpleFoam on v1912 (tests/foamRun),
+# measured by hand in an OpenFOAM-12 shell: CI has no OpenFOAM-12
+FOAMRUN_NOTES = ["## foamRun on OpenFOAM-12 (canopyFluid) against "
+                 "canopyPimpleFoam", ""]
+FOAMRUN_NOTES += [
+    "The solver module `applications/modules/canopyFluid` under `foamRun` "
+    "on OpenFOAM-12 (Foundation, commit 0b487fc, built at -O1) against "
+    "`canopyPimpleFoam` on OpenFOAM v1912 (Debian), the same case "
+    "directories and the same coupling library. The v1912 values are "
+    "`tests/foamRun/*/canopyPimpleFoam.ref`, kept current by the v1912 "
+    "test `openfoam/foamRunReferences`; the OpenFOAM-12 values come from "
+    "`./Alltest foamRun/` in a shell that has sourced OpenFOAM-12 "
+    "(`source <OpenFOAM-12>/etc/bashrc; export CANOPYFOAM_DIR=$PWD; "
+    "./Allwmake`).", "",
+    "| case | canopyPimpleFoam (v1912) | foamRun (OpenFOAM-12) | "
+    "difference | tolerance |",
+    "|---|---|---|---|---|",
+    "| porous plate, pressure drop at 0.2 m/s | 50.0181 Pa | 50.0181 Pa | "
+    "0 | 0.5 % |",
+    "| porous plate, 0.5 m/s | 125.575 Pa | 125.575 Pa | 0 | 0.5 % |",
+    "| porous plate, 1.0 m/s | 252.712 Pa | 252.713 Pa | 4e-6 | 0.5 % |",
+    "| 7 ft canopy, 8 cells across D0, descent at t = 2 s, 1 rank | "
+    "3.24659 m/s (2.219 coupling iterations a step) | 3.2576 m/s "
+    "(2.234) | 0.34 % | 1 % |",
+    "| the same on 2 ranks | 3.24659 m/s (2.219) | 3.26218 m/s (2.229) | "
+    "0.48 % | 1 % |",
+    "| restart from 0.5 s to 1 s, 1 and 2 ranks (`tests/foamRun/restart`)"
+    " | byte for byte | byte for byte | - | exact |", ""]
+FOAMRUN_NOTES += [
+    "The two solvers run the same coupling, structure and face-force "
+    "numerics; what differs is OpenFOAM's: foamRun grows the time step by "
+    "up to `deltaTFactor` (1.2) a step where canopyPimpleFoam's setDeltaT "
+    "grows it more gently, and the linear solvers and the 2-rank "
+    "agglomeration are OpenFOAM-12's. The porous plate reaches a steady "
+    "state, where those differences vanish; the 7 ft canopy is still "
+    "accelerating at 2 s (2.7 m/s at 1 s), so a first-order difference in "
+    "the time steps shows in its descent. Under foamRun the coupling ends "
+    "the outer loop through PIMPLE's `outerCorrectorResidualControl`: "
+    "the iteration after the coupling has converged solves nothing "
+    "(`canopyFluid.H`), and the coupling iterations a step agree within "
+    "0.7 %.", ""]
+
+
 def previous_sections():
     """{study title: its lines} of the report as it is now (the sections
     between '## ' headings, the structure section excluded)."""
@@ -2472,6 +2550,8 @@ def write_report():
         if fig:
             md += ["![%s](%s)" % (title, fig), ""]
     md += COUPLING_NOTES
+    md += DIVERGENCE_NOTES
+    md += FOAMRUN_NOTES
     structure_lines = structure_studies()
     md += ["## The structure alone: energy and time-step studies", "",
            "From `build/canopy/bin/canopy-tests` (the assertions are in "
