@@ -2006,7 +2006,15 @@ FOAMRUN_NOTES += [
     "| the same on 2 ranks | 3.24659 m/s (2.219) | 3.26218 m/s (2.229) | "
     "0.48 % | 1 % |",
     "| restart from 0.5 s to 1 s, 1 and 2 ranks (`tests/foamRun/restart`)"
-    " | byte for byte | byte for byte | - | exact |", ""]
+    " | byte for byte | byte for byte | - | exact |",
+    "| a failing step (`tests/foamRun/lastGoodState`: speed limit 2 m/s) "
+    "| stops at 0.57 s, writes 0.56 s, a restart runs on to 0.76 s | the "
+    "same | - | - |", "",
+    "`./Alltest` in the OpenFOAM-12 shell: 82 passed, 0 failed (the C, "
+    "Python and ParaView tests, the verification cases and the seven "
+    "tutorials for three steps under foamRun, the foamRun tests; the 17 "
+    "tests/openfoam tests that need canopyPimpleFoam skipped with one "
+    "line).", ""]
 FOAMRUN_NOTES += [
     "The two solvers run the same coupling, structure and face-force "
     "numerics; what differs is OpenFOAM's: foamRun grows the time step by "
