@@ -2009,7 +2009,10 @@ FOAMRUN_NOTES += [
     " | byte for byte | byte for byte | - | exact |",
     "| a failing step (`tests/foamRun/lastGoodState`: speed limit 2 m/s) "
     "| stops at 0.57 s, writes 0.56 s, a restart runs on to 0.76 s | the "
-    "same | - | - |", "",
+    "same | - | - |",
+    "| PIMPLE set-ups the coupling cannot end the loop under "
+    "(`tests/foamRun/setUpErrors`: 5 variants) | - | each refused at the "
+    "start, naming the entry | - | - |", "",
     "`./Alltest` in the OpenFOAM-12 shell: 82 passed, 0 failed (the C, "
     "Python and ParaView tests, the verification cases and the seven "
     "tutorials for three steps under foamRun, the foamRun tests; the 17 "
