@@ -1974,9 +1974,13 @@ DIVERGENCE_NOTES += [
     "makes the coupling take 15-34 iterations and miss 1e-3 in 40 at "
     "27.106 s, and the steps that do converge show the same "
     "oscillation, so the rms norm hiding unconverged triangles is not "
-    "the cause either. Open: the stabiliser's mass (0.54 kg/m², half a "
-    "broadside disc's) against the local added mass of the flapping "
-    "cloth, its endOfStep balance, and the lines' damping.", ""]
+    "the cause either. The stabiliser is not it: its mass at a "
+    "broadside disc's 1.09 kg/m² instead of 0.54 stops at 27.278 s (after "
+    "11-29 iterations a step), and its balance stepMean instead of "
+    "endOfStep at 27.337 s. Open: the suspension lines (light nodes, "
+    "EA 1923 N, no compression: a stiff, non-smooth system for one "
+    "implicit step of 10 ms) and what drives the cloth's load at 35 "
+    "Hz.", ""]
 
 
 # foamRun on OpenFOAM-12 against canopyPimpleFoam on v1912 (tests/foamRun),
