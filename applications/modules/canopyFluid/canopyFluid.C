@@ -5,6 +5,7 @@
 
 #include "canopyFluid.H"
 #include "pressureFaceGradient.H"
+#include "restoreExactTime.H"
 #include "Residuals.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -22,42 +23,17 @@ namespace solvers
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-bool Foam::solvers::canopyFluid::restoreExactTime(const Time& runTime)
+Foam::IOobject Foam::solvers::canopyFluid::lastGoodIO
+(
+    const word& name
+) const
 {
-    if (runTime.timeIndex() == 0)
-    {
-        return false;
-    }
-    const IOdictionary timeDict
+    // Neither read, written nor registered: only the solver uses it
+    return IOobject
     (
-        IOobject
-        (
-            "time",
-            runTime.name(),
-            "uniform",
-            runTime,
-            IOobject::READ_IF_PRESENT,
-            IOobject::NO_WRITE,
-            false
-        )
+        name, runTime.name(), mesh, IOobject::NO_READ, IOobject::NO_WRITE,
+        false
     );
-    scalar written = runTime.value();
-    if
-    (
-        timeDict.readIfPresent("value", written)
-     && written != runTime.value()
-     && Time::timeName(runTime.timeToUserTime(written)) == runTime.name()
-    )
-    {
-        Info<< "Continuing from the written time value " << written
-            << " (the directory's name rounds it)" << nl << endl;
-        const_cast<Time&>(runTime).setTime
-        (
-            runTime.userTimeToTime(written), runTime.timeIndex()
-        );
-        return true;
-    }
-    return false;
 }
 
 
@@ -172,7 +148,7 @@ void Foam::solvers::canopyFluid::checkSetUp() const
 Foam::solvers::canopyFluid::canopyFluid(fvMesh& mesh)
 :
     incompressibleFluid(mesh),
-    exactTimeRestored_(restoreExactTime(runTime)),
+    exactTimeRestored_(restoreExactTime(const_cast<Time&>(runTime))),
     coupling_(mesh),
     reconstruct_(mesh),
     pNeedsNonOrthCorrection_(meshNeedsNonOrthCorrection(mesh)),
@@ -191,7 +167,10 @@ Foam::solvers::canopyFluid::canopyFluid(fvMesh& mesh)
     ),
     couplingDone_(false),
     lastGoodTime_(),
-    lastGoodIndex_(0)
+    lastGoodIndex_(0),
+    lastGoodU_(lastGoodIO("lastGoodU"), U_),
+    lastGoodp_(lastGoodIO("lastGoodp"), p_),
+    lastGoodphi_(lastGoodIO("lastGoodphi"), phi_)
 {
     checkSetUp();
 }
@@ -212,12 +191,9 @@ void Foam::solvers::canopyFluid::preSolve()
     // The state at the step's start (the time has not advanced yet)
     lastGoodTime_ = instant(runTime.value(), runTime.name());
     lastGoodIndex_ = runTime.timeIndex();
-    lastGoodU_.clear();
-    lastGoodp_.clear();
-    lastGoodphi_.clear();
-    lastGoodU_.reset(new volVectorField("lastGoodU", U_));
-    lastGoodp_.reset(new volScalarField("lastGoodp", p_));
-    lastGoodphi_.reset(new surfaceScalarField("lastGoodphi", phi_));
+    lastGoodU_ == U_;
+    lastGoodp_ == p_;
+    lastGoodphi_ == phi_;
     couplingDone_ = false;
 }
 
@@ -232,10 +208,10 @@ void Foam::solvers::canopyFluid::prePredictor()
     {
         // coupling.restartFluid: every coupling iteration solves the fluid
         // from the step's start (the inlet keeps this step's frame velocity)
-        U_.primitiveFieldRef() = lastGoodU_->primitiveField();
+        U_.primitiveFieldRef() = lastGoodU_.primitiveField();
         U_.correctBoundaryConditions();
-        p_ = lastGoodp_();
-        phi_ = lastGoodphi_();
+        p_ = lastGoodp_;
+        phi_ = lastGoodphi_;
     }
     if (!couplingDone_)
     {
@@ -289,18 +265,11 @@ void Foam::solvers::canopyFluid::postSolve()
         // Write the state at the step's start and stop with the reason
         Time& time = const_cast<Time&>(runTime);
         time.setTime(lastGoodTime_, lastGoodIndex_);
-        U_ == lastGoodU_();
-        p_ == lastGoodp_();
-        phi_ == lastGoodphi_();
+        U_ == lastGoodU_;
+        p_ == lastGoodp_;
+        phi_ == lastGoodphi_;
         time.writeNow();
-        coupling_.writeStructure();
-        FatalErrorInFunction
-            << "Stopping: " << coupling_.failure().c_str() << nl
-            << "    The last good state (t = " << runTime.name()
-            << ") is written; to go on, e.g. reduce deltaT, add coupling"
-            << " iterations (nOuterCorrectors) or lower"
-            << " coupling.acceleration.initial, and restart with startFrom"
-            << " latestTime." << exit(FatalError);
+        coupling_.stopAtLastGoodState();
     }
     incompressibleFluid::postSolve();
 }

@@ -45,7 +45,7 @@ Description
 
     Restart
         startFrom latestTime continues from the written fields, the time
-        value to every digit (restoreExactTime.H), the coupling's state
+        value to every digit (restoreExactTime), the coupling's state
         (<time>/uniform/canopyCoupling: the IB force, the frame, the
         stabiliser's balance, IQN-ILS's columns) and the structure's
         state at that time, bit for bit as if uninterrupted
@@ -66,6 +66,7 @@ Description
 #include "canopyCoupling.H"
 #include "cachedReconstruct.H"
 #include "pressureFaceGradient.H"
+#include "restoreExactTime.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -82,7 +83,7 @@ int main(int argc, char *argv[])
     #include "addCheckCaseOptions.H"
     #include "setRootCaseLists.H"
     #include "createTime.H"
-    #include "restoreExactTime.H"
+    restoreExactTime(runTime);
     #include "createMesh.H"
     canopyPimpleControl pimple(mesh);
     #include "createTimeControls.H"

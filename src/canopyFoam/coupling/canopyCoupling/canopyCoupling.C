@@ -237,7 +237,8 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
     if (!advanced)
     {
         failure_ =
-            "the structure's time step to t = " + canopyCompat::timeName(mesh_.time())
+            "the structure's time step to t = "
+          + canopyCompat::timeName(mesh_.time())
           + " failed (coupling iteration " + Foam::name(step_.iterations)
           + "): " + message;
         converged_ = true;
@@ -256,7 +257,8 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
     const string problem(placeMarkers());
     if (!problem.empty())
     {
-        failure_ = "at t = " + canopyCompat::timeName(mesh_.time()) + ", " + problem;
+        failure_ =
+            "at t = " + canopyCompat::timeName(mesh_.time()) + ", " + problem;
         // Markers and stencils back at the step's start for what follows
         returnToStepStart();
         converged_ = true;
@@ -317,8 +319,8 @@ bool Foam::canopyCoupling::endTimeStep()
         {
             parts_->frame().undoMove();
             failure_ =
-                "at t = " + canopyCompat::timeName(mesh_.time()) + " (frame moved), "
-              + problem;
+                "at t = " + canopyCompat::timeName(mesh_.time())
+              + " (frame moved), " + problem;
         }
     }
 
@@ -382,6 +384,20 @@ void Foam::canopyCoupling::writeStructure()
     Info<< "canopyCoupling: wall time since the run started: structure "
         << structureSeconds_ << " s, immersed boundary " << ibSeconds_
         << " s (the rest of ClockTime is the fluid)" << endl;
+}
+
+
+void Foam::canopyCoupling::stopAtLastGoodState()
+{
+    writeStructure();
+    FatalErrorInFunction
+        << "Stopping: " << failure_.c_str() << nl
+        << "    The last good state (t = "
+        << canopyCompat::timeName(mesh_.time())
+        << ") is written; to go on, e.g. reduce deltaT, add coupling"
+        << " iterations (nOuterCorrectors) or lower"
+        << " coupling.acceleration.initial, and restart with startFrom"
+        << " latestTime." << exit(FatalError);
 }
 
 

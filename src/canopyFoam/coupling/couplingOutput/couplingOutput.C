@@ -104,22 +104,22 @@ Foam::fileName Foam::couplingOutput::statePath() const
 }
 
 
-Foam::autoPtr<Foam::IOdictionary> Foam::couplingOutput::readState() const
+Foam::autoPtr<Foam::localIOdictionary> Foam::couplingOutput::readState() const
 {
     IOobject io(stateIO(IOobject::MUST_READ));
     if (mesh_.time().value() == 0)
     {
-        return autoPtr<IOdictionary>();
+        return autoPtr<localIOdictionary>();
     }
-    if (!canopyCompat::headerOk<IOdictionary>(io))
+    if (!canopyCompat::headerOk<localIOdictionary>(io))
     {
         WarningInFunction
             << "No " << statePath() << ": the immersed-boundary"
             << " force restarts from zero and the frame from the payload"
             << endl;
-        return autoPtr<IOdictionary>();
+        return autoPtr<localIOdictionary>();
     }
-    return autoPtr<IOdictionary>(new IOdictionary(io));
+    return autoPtr<localIOdictionary>(new localIOdictionary(io));
 }
 
 
@@ -135,7 +135,7 @@ void Foam::couplingOutput::write
     // that a restart continues exactly: the precision is set before the
     // entries are added, because an entry is formatted when it is added
     const unsigned precision = IOstream::defaultPrecision(17);
-    IOdictionary state(stateIO(IOobject::NO_READ));
+    localIOdictionary state(stateIO(IOobject::NO_READ));
     addState(state);
     state.writeObject
     (

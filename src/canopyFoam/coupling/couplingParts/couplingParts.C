@@ -74,7 +74,7 @@ Foam::couplingParts::couplingParts
     // The files; on a restart the structure's state at the start time
     // and the coupling's (null when there is none)
     output_.reset(new couplingOutput(mesh, structure, rho));
-    const autoPtr<IOdictionary> state(output_->readState());
+    const autoPtr<localIOdictionary> state(output_->readState());
 
     // The markers on the canopy, their stencils and forces: with a
     // restart's subdivision levels (so that its markers match the forces

@@ -83,7 +83,10 @@ Foam::canopyFrames::payload::payload
             "is missing (required: the far field's patches)"
         );
     }
-    const wordReList names(canopyCompat::readValue<wordReList>(dict, "inletPatches"));
+    const wordReList names
+    (
+        canopyCompat::readValue<wordReList>(dict, "inletPatches")
+    );
     inletPatches_ = mesh.boundaryMesh().patchSet(names, false).sortedToc();
     if (inletPatches_.empty())
     {
