@@ -1944,43 +1944,73 @@ COUPLING_NOTES += [
     'tutorials/parachutes/flatCircular7ft/README.md).', ""]
 
 
-# What precedes the long 7 ft runs' stop (study tolerance7ftLong), measured
-# by restarting 7ft-tol1e-3-relax1-40s from its written state at 27 s
-DIVERGENCE_NOTES = ["## The long 7 ft runs' stop: a growing oscillation "
-                    "at the time-step scale", ""]
+# What stopped the long 7 ft runs (study tolerance7ftLong) and the cure,
+# measured by restarting them from their written states (27 s, 28 s, 32 s)
+DIVERGENCE_NOTES = ["## The long 7 ft runs' stop: a suspension line's "
+                    "vibration, cured by resolving the lines in the "
+                    "structure's step", ""]
 DIVERGENCE_NOTES += [
     "Both long runs of study tolerance7ftLong stopped with the "
     "structure's HHT step diverging (a node above the 100 m/s speed "
-    "limit). Restarted from its written state at 27 s, "
-    "`7ft-tol1e-3-relax1-40s` stops again at t = 27.2963 s, node 255 at "
-    "104.935 m/s, the same digits: the stop is deterministic and takes "
-    "three minutes to reproduce. What precedes it, over about 0.3 s "
-    "(the 40 s run at 37.4-37.65 s shows the same):", "",
-    "- the load on the cloth alternates with a period of two to three "
-    "time steps (about 30 ms, 35 Hz): the vertical force between 22 and "
-    "152 N (the weight is 56 N), sideways up to 43 N; the cloth's "
-    "spring energy swings between 1 and 9 J with it;",
-    "- the slip at the markers before the forcing (relative to the "
-    "largest normal velocity) rises from below 0.1 to 0.4-1.4, and the "
-    "coupling needs 8-35 iterations a step instead of 4-5;",
-    "- the nodes that pass the limit (255, 260, 261) are suspension-line "
-    "nodes (0.97 g each), whipped by the oscillating canopy.", ""]
-DIVERGENCE_NOTES += [
-    "Restarts from 27 s with one change each: 4 forcing iterations "
-    "instead of 2 stop at 27.317 s (no cure); maxCo 0.25 instead of 0.5 "
-    "stops sooner, at 27.039 s, so a smaller time step makes it worse, "
-    "the mark of an added-mass instability of the time discretisation "
-    "rather than of a Courant limit; residualNorm max instead of rms "
-    "makes the coupling take 15-34 iterations and miss 1e-3 in 40 at "
-    "27.106 s, and the steps that do converge show the same "
-    "oscillation, so the rms norm hiding unconverged triangles is not "
-    "the cause either. The stabiliser is not it: its mass at a "
-    "broadside disc's 1.09 kg/m² instead of 0.54 stops at 27.278 s (after "
-    "11-29 iterations a step), and its balance stepMean instead of "
-    "endOfStep at 27.337 s. Nor is the lines' damping: 1 N s/m instead "
-    "of 0.05 stops at 27.240 s (node 262). The lines are whipped by the "
-    "canopy; open is what drives the cloth's load at 35 Hz, which no "
-    "damping, stabiliser or forcing setting above removes.", ""]
+    "limit): `7ft-tol1e-3-relax1-40s` at 27.30 s, `7ft-relax1-40s` at "
+    "37.66 s. The stop is deterministic (a restart from 27 s stops at "
+    "27.2963 s, node 255 at 104.935 m/s, the same digits). The canopy "
+    "file (postProcessing/canopy/canopy.h5, every 0.25 s) shows where it "
+    "starts: one suspension line (nodes 254-263 between skirt node 109 "
+    "and the payload) vibrates across its length. Its largest speed "
+    "relative to the payload is 0.1-0.4 m/s while the wake is "
+    "symmetric, then grows within about a second to 20 m/s (from 19.5 s "
+    "in the 1e-3 run, from 32.5 s in the 5e-3 run) and stays at 15-80 "
+    "m/s for 5-7 s, its segments stretched by up to 3 % (tensions of "
+    "tens of N where the payload's weight gives each line 3.3 N), until "
+    "a node passes the limit. The cloth moves at 0.2-2 m/s relative to "
+    "the payload meanwhile; the load oscillation of 22-152 N at 35 Hz "
+    "and the 8-35 coupling iterations a step before the stop are the "
+    "whipping line pulling the skirt. So the descent these runs read "
+    "after 19.5 s (1e-3) and 32.5 s (5e-3) carries a line that no real "
+    "parachute has.", "",
+    "The structure took one implicit HHT step per fluid time step "
+    "(`maxOmegaDt 1e9`), about 40 times the period scale of the lines' "
+    "axial modes (the frequency bound Lambda is about 7000 rad/s: a 0.97 g "
+    "node between two 0.194 m segments of EA 1923 N). HHT-alpha is "
+    "unconditionally stable for linear problems only; in nonlinear "
+    "dynamics with a very stiff and a very flexible response together "
+    "(here the lines' axial stiffness and their transverse motion) the "
+    "trapezoidal family can go unstable (K.-J. Bathe and G. Noh, "
+    "Computers & Structures 98-99, 2012, 1-6; Bathe and Baig, Computers "
+    "& Structures 83, 2005, 2513-2524). Restarts of `7ft-relax1-40s` "
+    "from 32 s, when its line already moved at 4 m/s, to 34 s with one "
+    "change each (largest line speed at 33.5 s; about a minute each):", "",
+    "| change | sub-steps a step | line speed at 33.5 s [m/s] | end |",
+    "|---|---|---|---|",
+    "| none (one HHT step, Lambda dt about 40) | 1 | 35.5 | 34 s |",
+    "| maxOmegaDt 20 | 4 | 76 at 33.2 s | diverged at 33.21 s |",
+    "| maxOmegaDt 10 | 7 | 92 at 32.37 s | diverged at 32.38 s |",
+    "| maxOmegaDt 4 | 17 | 4.0 | 34 s, 2.0-4.7 throughout |",
+    "| maxOmegaDt 2 | 33 | 4.1 | 34 s, 3.0-5.3 throughout |",
+    "| maxOmegaDt 1 | 65 | 3.5 | 34 s, 2.8-4.3 throughout |",
+    "| hhtAlpha 0 (no numerical damping) | 1 | - | diverged at 32.33 s |",
+    "| Newton tolerance 1e-9 instead of 1e-5 | 1 | 17.5 | 34 s, 32 m/s at its end |",
+    "| lines' axial damping 0.3 N s/m (about 5 % of critical) instead of 0.05 | 1 | 24.7 | 34 s |",
+    "| no hinge dashpots | 1 | 36.2 | 34 s, 6.6 coupling iterations a step |", "",
+    "Resolving the lines' axial modes (Lambda dt <= 4) is what stops the "
+    "growth; damping does not. Restarted from 28 s (its line at 1.3 m/s) "
+    "with `maxOmegaDt 2`, `7ft-relax1-40s` runs to 40 s with the line at "
+    "0.8-3.1 m/s throughout. The HHT tutorials (7 ft, T-10, C-9, both "
+    "1/3-scale G-11) therefore take sub-steps of Lambda dt <= 2 "
+    "(`integrator.maxOmegaDt 2`, about 33 a time step in the 7 ft case); "
+    "the structure's share of the wall time does not grow (10.4 s against "
+    "14.6 s of the 2 s restart: the sub-steps' Newton solves converge in "
+    "fewer iterations than the one large step's). The coupling needs "
+    "more iterations: the added-mass stabiliser is balanced by the last "
+    "sub-step's end acceleration (`addedMass.balance endOfStep`), which "
+    "cancels its mass term exactly only in one step. The 7 ft case at 8 "
+    "cells across D0 to 2 s (tests/foamRun/flatCircular7ft) takes 4.3 "
+    "iterations a step instead of 2.2 (descent at 2 s 3.262 m/s instead "
+    "of 3.247). Balanced by the step's mean acceleration (`stepMean`) "
+    "instead, the sub-stepped coupling does not converge while the "
+    "canopy inflates (20 iterations at 0.19 s). The runs above were "
+    "made before this change; the long runs are being re-made with it.", ""]
 
 
 # foamRun on OpenFOAM-12 against canopyPimpleFoam on v1912 (tests/foamRun),
