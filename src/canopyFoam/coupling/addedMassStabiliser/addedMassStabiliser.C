@@ -26,7 +26,10 @@ Foam::addedMassStabiliser::addedMassStabiliser
     direction_(),
     stepStartVelocity_(),
     balanceAcceleration_(),
+    stepMean_(),
+    stepStartMean_(),
     fromLastStep_(false),
+    fromStepMean_(false),
     endOfStep_(false),
     isotropic_(false)
 {
@@ -37,12 +40,16 @@ Foam::addedMassStabiliser::addedMassStabiliser
         addedMass.dict().empty()
       ? 0
       : addedMass.nonNegative("mass", "added mass per area [kg/m^2]");
-    fromLastStep_ =
+    const word predictor
+    (
         addedMass.choice
         (
-            "predictor", {"lastStep", "zero"}, "predictor", "lastStep"
+            "predictor", {"lastStep", "lastStepMean", "zero"}, "predictor",
+            "lastStep"
         )
-     == "lastStep";
+    );
+    fromLastStep_ = predictor != "zero";
+    fromStepMean_ = predictor == "lastStepMean";
     endOfStep_ =
         addedMass.choice
         (
@@ -100,7 +107,12 @@ void Foam::addedMassStabiliser::beginStep(canopyStructure& structure)
     {
         balanceAcceleration_ = Zero;
     }
+    else if (fromStepMean_ && stepMean_.size())
+    {
+        balanceAcceleration_ = stepMean_;
+    }
     stepStartBalance_ = balanceAcceleration_;
+    stepStartMean_ = stepMean_;
 
     // The added mass acts along the nodes' normals at the step's start
     // (area-weighted over the adjacent triangles), or with
@@ -161,6 +173,10 @@ void Foam::addedMassStabiliser::update
     {
         balanceAcceleration_ = (structure.velocities() - stepStartVelocity_)/dt;
     }
+    if (fromStepMean_)
+    {
+        stepMean_ = (structure.velocities() - stepStartVelocity_)/dt;
+    }
 }
 
 
@@ -185,6 +201,10 @@ void Foam::addedMassStabiliser::writeState(dictionary& state) const
     if (active())
     {
         state.add("addedMassBalance", balanceAcceleration_);
+        if (fromStepMean_ && stepMean_.size())
+        {
+            state.add("addedMassStepMean", stepMean_);
+        }
     }
 }
 
@@ -214,6 +234,29 @@ void Foam::addedMassStabiliser::readState(const dictionary& state)
             << exit(FatalIOError);
     }
     balanceAcceleration_ = balance;
+    if (!fromStepMean_)
+    {
+        return;
+    }
+    if (!state.found("addedMassStepMean"))
+    {
+        WarningInFunction
+            << "No entry 'addedMassStepMean' in " << state.name()
+            << ": the added-mass stabiliser's first balance after the"
+            << " restart is the last step's end acceleration" << endl;
+        return;
+    }
+    stepMean_ =
+        canopyCompat::readValue<vectorField>(state, "addedMassStepMean");
+    if (stepMean_.size() != balanceAcceleration_.size())
+    {
+        FatalIOErrorInFunction(state)
+            << "Entry 'addedMassStepMean' holds " << stepMean_.size()
+            << " accelerations, but the stabiliser acts on "
+            << balanceAcceleration_.size() << " nodes (was coupling.addedMass"
+            << " or the structure changed since it was written?)"
+            << exit(FatalIOError);
+    }
 }
 
 
