@@ -1990,7 +1990,7 @@ DIVERGENCE_NOTES += [
     "after 19.5 s (1e-3) and 32.5 s (5e-3) carries a line that no real "
     "parachute has.", "",
     "The structure took one implicit HHT step per fluid time step "
-    "(`maxOmegaDt 1e9`), about 40 times the period scale of the lines' "
+    "(`maxOmegaDt 1e9`): Lambda dt about 40 for the lines' "
     "axial modes (the frequency bound Lambda is about 7000 rad/s: a 0.97 g "
     "node between two 0.194 m segments of EA 1923 N). HHT-alpha is "
     "unconditionally stable for linear problems only; in nonlinear "

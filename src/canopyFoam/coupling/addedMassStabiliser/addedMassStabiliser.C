@@ -209,53 +209,51 @@ void Foam::addedMassStabiliser::writeState(dictionary& state) const
 }
 
 
+bool Foam::addedMassStabiliser::readNodal
+(
+    const dictionary& state,
+    const word& entry,
+    const string& ifAbsent,
+    vectorField& values
+) const
+{
+    if (!state.found(entry))
+    {
+        WarningInFunction
+            << "No entry '" << entry << "' in " << state.name()
+            << ": the added-mass stabiliser's first balance after the"
+            << " restart is " << ifAbsent.c_str() << endl;
+        return false;
+    }
+    const vectorField read(canopyCompat::readValue<vectorField>(state, entry));
+    if (read.size() != balanceAcceleration_.size())
+    {
+        FatalIOErrorInFunction(state)
+            << "Entry '" << entry << "' holds " << read.size()
+            << " accelerations, but the stabiliser acts on "
+            << balanceAcceleration_.size() << " nodes (was coupling.addedMass"
+            << " or the structure changed since it was written?)"
+            << exit(FatalIOError);
+    }
+    values = read;
+    return true;
+}
+
+
 void Foam::addedMassStabiliser::readState(const dictionary& state)
 {
-    if (!active())
+    if
+    (
+        active()
+     && readNodal(state, "addedMassBalance", "zero", balanceAcceleration_)
+     && fromStepMean_
+    )
     {
-        return;
-    }
-    if (!state.found("addedMassBalance"))
-    {
-        WarningInFunction
-            << "No entry 'addedMassBalance' in " << state.name()
-            << ": the added-mass stabiliser's first balance after the"
-            << " restart is zero" << endl;
-        return;
-    }
-    const vectorField balance(canopyCompat::readValue<vectorField>(state, "addedMassBalance"));
-    if (balance.size() != balanceAcceleration_.size())
-    {
-        FatalIOErrorInFunction(state)
-            << "Entry 'addedMassBalance' holds " << balance.size()
-            << " accelerations, but the stabiliser acts on "
-            << balanceAcceleration_.size() << " nodes (was coupling.addedMass"
-            << " or the structure changed since it was written?)"
-            << exit(FatalIOError);
-    }
-    balanceAcceleration_ = balance;
-    if (!fromStepMean_)
-    {
-        return;
-    }
-    if (!state.found("addedMassStepMean"))
-    {
-        WarningInFunction
-            << "No entry 'addedMassStepMean' in " << state.name()
-            << ": the added-mass stabiliser's first balance after the"
-            << " restart is the last step's end acceleration" << endl;
-        return;
-    }
-    stepMean_ =
-        canopyCompat::readValue<vectorField>(state, "addedMassStepMean");
-    if (stepMean_.size() != balanceAcceleration_.size())
-    {
-        FatalIOErrorInFunction(state)
-            << "Entry 'addedMassStepMean' holds " << stepMean_.size()
-            << " accelerations, but the stabiliser acts on "
-            << balanceAcceleration_.size() << " nodes (was coupling.addedMass"
-            << " or the structure changed since it was written?)"
-            << exit(FatalIOError);
+        readNodal
+        (
+            state, "addedMassStepMean", "the last step's end acceleration",
+            stepMean_
+        );
     }
 }
 
