@@ -37,7 +37,13 @@ Definitions used throughout (stated in the summary too):
   S0 = pi D0^2 / 4 the nominal area; and C_D from the mean pressure force
   against gravity, -F . g/|g|, with the same V and S0.
 
-Only numpy is needed to analyse; matplotlib is imported by plot() alone.
+- the canopy's shape over the interval (crown height, skirt radius, creases
+  by ring) from postProcessing/canopy/canopy.h5: shape.py states the
+  definitions.
+
+Only numpy is needed to analyse the time series; the shape needs h5py and
+is reported as not read without it (or without canopy.h5); matplotlib is
+imported by plot() alone.
 """
 
 import argparse
@@ -47,6 +53,8 @@ import os
 import sys
 
 import numpy as np
+
+from . import shape as canopy_shape
 
 COLUMNS = (
     "time",
@@ -642,6 +650,10 @@ def analyse(case_dir, fraction=None, steady_start=None, diameter=None,
     cd = drag_coefficients(v_stats["mean"], f_stats["mean"],
                            params["totalMass"][0], g,
                            params["rho"][0], D0)
+    try:
+        form = dict(canopy_shape.analyse(case_dir, t0, t1), available=True)
+    except canopy_shape.ShapeError as e:
+        form = {"available": False, "note": str(e)}
     steady_warning = ""
     if abs(v_stats["drift"]) > max(2.0 * v_stats["std"],
                                    0.01 * abs(v_stats["mean"])):
@@ -674,6 +686,7 @@ def analyse(case_dir, fraction=None, steady_start=None, diameter=None,
         "pressureForceAgainstGravity": f_stats,
         "breathing": {k: v for k, v in b.items() if not k.startswith("_")},
         "swing": swing,
+        "shape": form,
         "dragCoefficient": cd,
         "coupling": {
             "meanIterations": float(np.mean(iterations)),
@@ -759,6 +772,29 @@ def _converged_line(study, cd0):
     return line
 
 
+def shape_summary(form, D0):
+    """The summary's lines on the canopy's shape (shape.py)."""
+    if not form or not form.get("available"):
+        return "  shape        not read: %s" % (
+            form["note"] if form else "no shape in this report")
+    rings = form["rings"]
+    return "\n".join([
+        "  shape        crown %.3g m above the skirt (%.3g D0); skirt radius "
+        "%.3g m (%.3g .. %.3g), largest radius %.3g m (%.3g D0) about the "
+        "payload-canopy axis; mean of %d states written in the interval"
+        % (form["crownHeight"], form["crownHeight"] / D0,
+           form["skirtRadiusMean"], form["skirtRadiusMin"],
+           form["skirtRadiusMax"], form["largestRadius"],
+           form["largestRadius"] / D0, form["states"]),
+        "  creases      fold angle between neighbouring cloth triangles by "
+        "ring (s = 0 crown .. 1 skirt: %s): %s deg; folded beyond %g deg: "
+        "%s %%" % (
+            " ".join("%g-%g" % (q["inner"], q["outer"]) for q in rings),
+            " / ".join(_g(q["foldMean"], 2) for q in rings),
+            canopy_shape.FOLDED_DEGREES,
+            " / ".join(_g(100 * q["foldedFraction"], 2) for q in rings))])
+
+
 def format_summary(r):
     """The one-screen summary of a report dict."""
     p = r["parameters"]
@@ -822,6 +858,7 @@ def format_summary(r):
                 else "; no period resolved"))
     add("  diameter     %.4g m = %.3f D0  std %.3g  min %.4g  max %.4g"
         % (d["mean"], d["mean"] / D0, d["std"], d["min"], d["max"]))
+    add(shape_summary(r.get("shape"), D0))
     if b["resolved"]:
         add("  breathing    %.4g Hz  (resolution %.3g Hz, peak bin %d, "
             "%.1f periods, amplitude %.3g m)"

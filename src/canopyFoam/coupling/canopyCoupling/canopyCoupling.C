@@ -250,7 +250,8 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
     converged_ =
         iterate_->update
         (
-            strong_, parts_->acceleration(), parts_->addedMass()
+            strong_, parts_->acceleration(), parts_->addedMass(),
+            mesh_.time().deltaTValue()
         );
     step_.residual = iterate_->residual();
 

@@ -1,0 +1,251 @@
+"""shape.py — the inflated canopy's shape from a run's canopy.h5: its profile (crown height, skirt and largest radius about the suspension axis) and its creases (the fold angle between neighbouring cloth triangles) by ring of the cloth.
+
+Definitions (stated in bin/canopy-report's summary too):
+- the axis points from the payload node to the mean of the cloth's nodes;
+  heights are along it, radii are distances from it;
+- the skirt is the cloth's longest boundary loop (by rest length); the crown
+  height is the highest cloth node's height above the skirt nodes' mean;
+- a cloth node's radial position s runs from 0 at the crown (the apex, or
+  the vent's hem) to 1 at the skirt: 1 - d/d_max, d its shortest path to the
+  skirt along the cloth's springs at their rest lengths;
+- the fold angle of an edge shared by two triangles is the angle between
+  their normals (0 on a smooth surface, 180 degrees where the cloth folds
+  back on itself); an edge is folded when that angle exceeds 90 degrees.
+  An edge belongs to the ring that holds the mean s of its two nodes.
+
+Reading needs h5py (Debian's python3-h5py); the geometry is numpy only.
+"""
+
+import heapq
+import math
+import os
+from collections import defaultdict
+
+import numpy as np
+
+GROUP_FABRIC, GROUP_TAPE, GROUP_PAYLOAD = 0, 1, 3
+RING_EDGES = (0.0, 0.3, 0.5, 0.7, 0.85, 1.0)
+FOLDED_DEGREES = 90.0
+
+
+class ShapeError(Exception):
+    pass
+
+
+def edges_of(triangles):
+    """{(i, j) with i < j: [triangle indices]} of a triangle list."""
+    owners = defaultdict(list)
+    for k, (a, b, c) in enumerate(np.asarray(triangles, dtype=int)):
+        for i, j in ((a, b), (b, c), (c, a)):
+            owners[(min(i, j), max(i, j))].append(k)
+    return owners
+
+
+def boundary_loops(owners):
+    """The boundary's connected components (lists of edges used by one
+    triangle), as lists of (i, j)."""
+    boundary = [e for e, ts in owners.items() if len(ts) == 1]
+    touching = defaultdict(list)
+    for e in boundary:
+        touching[e[0]].append(e)
+        touching[e[1]].append(e)
+    seen, loops = set(), []
+    for start in boundary:
+        if start in seen:
+            continue
+        loop, todo = [], [start]
+        seen.add(start)
+        while todo:
+            e = todo.pop()
+            loop.append(e)
+            for n in e:
+                for f in touching[n]:
+                    if f not in seen:
+                        seen.add(f)
+                        todo.append(f)
+        loops.append(loop)
+    return loops
+
+
+def radial_position(n_nodes, springs, rest_lengths, skirt_nodes, cloth):
+    """s per node (NaN off the cloth): 1 - d/d_max, d the shortest path to
+    the skirt over the given springs at their rest lengths."""
+    adjacency = defaultdict(list)
+    for (i, j), l0 in zip(np.asarray(springs, dtype=int), rest_lengths):
+        if cloth[i] and cloth[j]:
+            adjacency[i].append((j, float(l0)))
+            adjacency[j].append((i, float(l0)))
+    d = np.full(n_nodes, np.inf)
+    heap = []
+    for n in skirt_nodes:
+        d[n] = 0.0
+        heap.append((0.0, n))
+    heapq.heapify(heap)
+    while heap:
+        dn, n = heapq.heappop(heap)
+        if dn > d[n]:
+            continue
+        for m, l0 in adjacency[n]:
+            if dn + l0 < d[m]:
+                d[m] = dn + l0
+                heapq.heappush(heap, (d[m], m))
+    s = np.full(n_nodes, np.nan)
+    reached = cloth & np.isfinite(d)
+    dmax = d[reached].max() if reached.any() else 0.0
+    if dmax <= 0.0:
+        raise ShapeError("the cloth has no node away from its skirt")
+    s[reached] = 1.0 - d[reached] / dmax
+    return s
+
+
+class CanopyMesh(object):
+    """What the shape needs of the canopy's mesh: the cloth's triangles,
+    its interior edges with their ring, the skirt's nodes and the payload
+    node."""
+
+    def __init__(self, groups, triangles, springs, rest_lengths,
+                 spring_groups, ring_edges=RING_EDGES):
+        groups = np.asarray(groups, dtype=int)
+        self.triangles = np.asarray(triangles, dtype=int)
+        if len(self.triangles) == 0:
+            raise ShapeError("the mesh has no cloth triangles")
+        payload = np.where(groups == GROUP_PAYLOAD)[0]
+        if len(payload) == 0:
+            raise ShapeError("the mesh has no payload node (group %d): the "
+                             "shape's axis needs one" % GROUP_PAYLOAD)
+        self.payload = int(payload[0])
+        self.cloth = np.isin(groups, (GROUP_FABRIC, GROUP_TAPE))
+        self.cloth_nodes = np.unique(self.triangles)
+        owners = edges_of(self.triangles)
+        loops = boundary_loops(owners)
+        if not loops:
+            raise ShapeError("the cloth has no boundary (no skirt)")
+        springs = np.asarray(springs, dtype=int)
+        rest = dict(((min(i, j), max(i, j)), l0) for (i, j), l0 in
+                    zip(springs, rest_lengths))
+        cloth_springs = np.isin(np.asarray(spring_groups, dtype=int),
+                                (GROUP_FABRIC, GROUP_TAPE))
+
+        def loop_length(loop):
+            return sum(rest.get(e, 0.0) for e in loop)
+        skirt = max(loops, key=loop_length)
+        self.skirt = np.array(sorted(set(n for e in skirt for n in e)))
+        self.s = radial_position(len(groups), springs[cloth_springs],
+                                 np.asarray(rest_lengths)[cloth_springs],
+                                 self.skirt, self.cloth)
+        interior = [(e, ts) for e, ts in owners.items() if len(ts) == 2]
+        self.edge_triangles = np.array([ts for _, ts in interior], dtype=int)\
+            .reshape(-1, 2)
+        edge_nodes = np.array([e for e, _ in interior], dtype=int)\
+            .reshape(-1, 2)
+        self.edge_s = self.s[edge_nodes].mean(axis=1) if len(interior) \
+            else np.zeros(0)
+        self.ring_edges = tuple(ring_edges)
+        self.edge_ring = np.clip(np.searchsorted(self.ring_edges,
+                                                 self.edge_s, side="right")
+                                 - 1, 0, len(self.ring_edges) - 2)
+
+
+def triangle_normals(x, triangles):
+    n = np.cross(x[triangles[:, 1]] - x[triangles[:, 0]],
+                 x[triangles[:, 2]] - x[triangles[:, 0]])
+    norm = np.linalg.norm(n, axis=1)
+    return n / np.where(norm > 0.0, norm, 1.0)[:, None]
+
+
+def snapshot(mesh, x):
+    """The shape of one state x (nodes x 3) of `mesh`: a dict."""
+    x = np.asarray(x, dtype=float)
+    cloth = x[mesh.cloth_nodes]
+    centre = cloth.mean(axis=0)
+    axis = centre - x[mesh.payload]
+    length = np.linalg.norm(axis)
+    if length == 0.0:
+        raise ShapeError("the payload is at the cloth's centre: no axis")
+    axis /= length
+    rel = x - centre
+    height = rel @ axis
+    radius = np.linalg.norm(rel - np.outer(height, axis), axis=1)
+    skirt_h = height[mesh.skirt].mean()
+    n = triangle_normals(x, mesh.triangles)
+    cosang = np.einsum("ij,ij->i", n[mesh.edge_triangles[:, 0]],
+                       n[mesh.edge_triangles[:, 1]])
+    fold = np.degrees(np.arccos(np.clip(cosang, -1.0, 1.0)))
+    rings = []
+    for k in range(len(mesh.ring_edges) - 1):
+        m = mesh.edge_ring == k
+        rings.append({
+            "inner": mesh.ring_edges[k], "outer": mesh.ring_edges[k + 1],
+            "edges": int(m.sum()),
+            "foldMean": float(fold[m].mean()) if m.any() else float("nan"),
+            "foldedFraction": float((fold[m] > FOLDED_DEGREES).mean())
+            if m.any() else float("nan")})
+    return {
+        "crownHeight": float(height[mesh.cloth_nodes].max() - skirt_h),
+        "skirtRadiusMean": float(radius[mesh.skirt].mean()),
+        "skirtRadiusMin": float(radius[mesh.skirt].min()),
+        "skirtRadiusMax": float(radius[mesh.skirt].max()),
+        "largestRadius": float(radius[mesh.cloth_nodes].max()),
+        "foldedFraction": float((fold > FOLDED_DEGREES).mean())
+        if len(fold) else float("nan"),
+        "rings": rings,
+    }
+
+
+def mean_shape(snapshots):
+    """The plain mean of snapshots' numbers (snapshots are written at a
+    fixed interval)."""
+    keys = ("crownHeight", "skirtRadiusMean", "skirtRadiusMin",
+            "skirtRadiusMax", "largestRadius", "foldedFraction")
+    out = {k: float(np.mean([s[k] for s in snapshots])) for k in keys}
+    out["rings"] = []
+    for k, ring in enumerate(snapshots[0]["rings"]):
+        out["rings"].append(dict(ring, **{
+            q: float(np.mean([s["rings"][k][q] for s in snapshots]))
+            for q in ("foldMean", "foldedFraction")}))
+    return out
+
+
+def h5_path(case_dir):
+    return os.path.join(case_dir, "postProcessing", "canopy", "canopy.h5")
+
+
+def read_case(case_dir, t0=-math.inf, t1=math.inf):
+    """(mesh, [(time, x), ...]) from <case>/postProcessing/canopy/canopy.h5,
+    the states written in [t0, t1]."""
+    try:
+        import h5py
+    except ImportError:
+        raise ShapeError("python3-h5py is not installed (bin/setup "
+                         "installs it)")
+    path = h5_path(case_dir)
+    if not os.path.isfile(path):
+        raise ShapeError("no %s" % os.path.relpath(path, case_dir))
+    try:
+        with h5py.File(path, "r") as f:
+            m = f["mesh"]
+            mesh = CanopyMesh(m["node_group"][:], m["triangles"][:],
+                              m["springs"][:], m["spring_rest_length"][:],
+                              m["spring_group"][:])
+            states = []
+            for name in sorted(f["steps"].keys()):
+                step = f["steps"][name]
+                t = float(step.attrs["time"])
+                if t0 - 1e-9 <= t <= t1 + 1e-9:
+                    states.append((t, step["x"][:]))
+    except (OSError, KeyError) as e:
+        raise ShapeError("%s: %s" % (os.path.relpath(path, case_dir), e))
+    return mesh, states
+
+
+def analyse(case_dir, t0, t1):
+    """The mean shape over the states written in [t0, t1], with the number
+    of states and the nominal diameter's units left to the caller."""
+    mesh, states = read_case(case_dir, t0, t1)
+    if not states:
+        raise ShapeError("canopy.h5 holds no state in t = %g .. %g s"
+                         % (t0, t1))
+    out = mean_shape([snapshot(mesh, x) for _, x in states])
+    out.update(states=len(states), timeFirst=states[0][0],
+               timeLast=states[-1][0])
+    return out
