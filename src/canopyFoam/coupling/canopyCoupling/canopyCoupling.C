@@ -250,8 +250,7 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
     converged_ =
         iterate_->update
         (
-            strong_, parts_->acceleration(), parts_->addedMass(),
-            mesh_.time().deltaTValue()
+            strong_, parts_->acceleration(), parts_->addedMass()
         );
     step_.residual = iterate_->residual();
 

@@ -69,8 +69,7 @@ bool Foam::interfaceIterate::update
 (
     const bool strong,
     interfaceAcceleration& acceleration,
-    addedMassStabiliser& addedMass,
-    const scalar deltaT
+    addedMassStabiliser& addedMass
 )
 {
     // This iteration's change of the interface velocity: its norm is the
@@ -81,19 +80,6 @@ bool Foam::interfaceIterate::update
     const scalarField change(target - normalVelocity_);
     residual_ = norm(change)/scale;
     worst_ = findMax(scalarField(mag(change)));
-    const vectorField& balance = addedMass.balanceAcceleration();
-    if (addedMass.active() && balance.size() == heldBalance_.size())
-    {
-        // The stabiliser's balance must have converged as well
-        const scalarField balanceChange(deltaT*mag(balance - heldBalance_));
-        const scalar balanceResidual =
-            (
-                balanceChange.empty() ? 0
-              : rms_ ? Foam::sqrt(average(sqr(balanceChange)))
-              : max(balanceChange)
-            )/scale;
-        residual_ = max(residual_, balanceResidual);
-    }
     if (!strong)
     {
         // Explicit: one structure solve per step; the PIMPLE outer loop
