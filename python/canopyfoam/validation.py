@@ -1398,6 +1398,54 @@ def _f(x, fmt="%.3g"):
                                 not math.isfinite(x)) else fmt % x
 
 
+# Studies whose report gets the canopy's shape over each run's interval
+SHAPE_STUDIES = ("default7ft", "resolution7ft", "tolerance7ftLong",
+                 "resolution7ftLong")
+
+
+def shape_lines(results):
+    """The table of the canopy's shape (report.analyse's "shape", from
+    canopy.h5) of the runs whose records hold it."""
+    rows = []
+    for run, rec in results:
+        r = rec and rec["analysis"]
+        form = r and r.get("shape")
+        if not form or not form.get("available"):
+            continue
+        D0 = r["parameters"]["nominalDiameter"]["value"]
+        rings = form["rings"]
+        rows.append("| %s | %s-%s s (%d states) | %.3f | %.3f (%.3f-%.3f) | "
+                    "%.3f | %s | %s |" % (
+                        run.ident, _f(form["timeFirst"], "%.4g"),
+                        _f(form["timeLast"], "%.4g"), form["states"],
+                        form["crownHeight"] / D0,
+                        form["skirtRadiusMean"] / D0,
+                        form["skirtRadiusMin"] / D0,
+                        form["skirtRadiusMax"] / D0,
+                        form["largestRadius"] / D0,
+                        " / ".join("%.0f" % q["foldMean"] for q in rings),
+                        " / ".join("%.0f" % (100 * q["foldedFraction"])
+                                   for q in rings)))
+    if not rows:
+        return []
+    ring_names = " / ".join("%g-%g" % (q["inner"], q["outer"]) for q in
+                            rings)
+    return ["The canopy's shape over each run's interval (`bin/canopy-"
+            "report`, python/canopyfoam/shape.py; the states canopy.h5 "
+            "holds, every 0.25 s): the crown's height above the skirt, "
+            "the skirt's and the largest radius about the payload-canopy "
+            "axis, in D0; the fold angle between neighbouring cloth "
+            "triangles and the share of edges folded beyond 90 degrees "
+            "by ring of the cloth (s = %s, 0 at the crown, 1 at the "
+            "skirt, along the cloth at rest). Runs made before the shape "
+            "was recorded, or whose canopy.h5 is not on this machine, "
+            "are not listed." % ring_names, "",
+            "| run | states | crown height / D0 | skirt radius / D0 (min-"
+            "max) | largest radius / D0 | fold angle by ring [deg] | "
+            "folded beyond 90 deg [%] |",
+            "|---|---|---|---|---|---|---|"] + rows + [""]
+
+
 def run_row(run, rec, why):
     """The table row of a run from its record (or why there is none)."""
     if rec is None:
@@ -2051,6 +2099,76 @@ DIVERGENCE_NOTES += [
     "coupling iterations a step (study tolerance7ftLong above).", ""]
 
 
+# Why the HHT tutorials start each step's stabiliser from zero: the main
+# job from rest with the lagging predictors, restarts from its 3 s state,
+# and the structure alone (tests/openfoam/addedMassStabiliser's case)
+STABILISER_NOTES = ["## The stabiliser's predictor: a lagging balance "
+                    "grows a vibration next to the 7 ft canopy's apex", ""]
+STABILISER_NOTES += [
+    "With the structure in sub-steps, the 7 ft main job (`7ft-default`, "
+    "12 cells across D0, coupling to 5e-3) with `addedMass.predictor "
+    "lastStepMean` stopped at 4.27 s: the coupling did not converge in "
+    "20 iterations, its residual alternating between two cloth points "
+    "at about 0.77 m from the axis while Aitken's factor fell to 0.05. "
+    "The canopy file shows why: the cloth nodes next to the apex (which "
+    "slides on the guide wire) vibrated ever faster, 1.2 m/s at 2 s, 3.1 "
+    "at 3 s, 8.7 at 3.75 s and 20 m/s at 4.25 s, the rest of the cloth "
+    "at 0.1-0.5 m/s; the coupling iterations rose with it, from 2.3 a "
+    "step at 1 s to 4.1 at 2 s, 6.5 at 4 s and 9 at 4.25 s. From rest "
+    "with `predictor lastStep` the same nodes reach 1.8 m/s at 1 s and "
+    "4.4 at 4.5 s, then calm to 0.8 m/s at 6.5 s, while the coupling "
+    "takes 4.0, 5.8 and 7.0 iterations a step over the seconds from 1, 3 "
+    "and 4 s (stopped at 6.7 s; 12 s would take beyond the main job's 15 "
+    "minutes). Restarted from the lastStepMean run's 3 s state (apex "
+    "nodes at 3.1 m/s) to 4 s, one change each:", "",
+    "| change | apex nodes at 4 s [m/s] | coupling iterations a step |",
+    "|---|---|---|",
+    "| none (lastStepMean, 5e-3) | 13.5 (stalled at 4.27 s) | 5.2 |",
+    "| coupling to 1e-3 | 9.0 | 7.3 |",
+    "| predictor lastStep | 7.1 | 5.5 |",
+    "| predictor zero | 2.5 (2.2 at 3.25 s) | 2.9 |",
+    "| acceleration IQN-ILS | stalled at 4.03 s | 2.8 |", "",
+    "Both lagging predictors start a step's balance from the previous "
+    "step's acceleration. The balance converges slowly where the air "
+    "does not resist the cloth (by m_a/(m + m_a) = 0.94 per iteration "
+    "for the 7 ft cloth and its 0.54 kg/m^2), so part of that lag "
+    "remains when the interface velocity has converged, and a lagging "
+    "restoring force is a negative damping "
+    "(src/canopyFoam/coupling/addedMassStabiliser/addedMassStabiliser.H). "
+    "The structure alone shows it in the tutorials' scheme "
+    "(tests/openfoam/addedMassStabiliser's case with hht, alpha -0.3, "
+    "maxOmegaDt 2, the stabiliser of 0.54 kg/m^2 in every direction "
+    "balanced at the step's end, 6 iterations a step of 0.01 s, no "
+    "air): a node passes the 100 m/s limit after 46 steps with "
+    "`lastStep`, 47 with `lastStepMean` and 237 with `zero`. The HHT "
+    "tutorials therefore start each step's balance from zero "
+    "(`predictor zero`), whose unconverged part acts as extra inertia "
+    "instead.", "",
+    "What that costs: from rest the main job's steps converge at their "
+    "first iteration from 1 s on (1.23 iterations a step over 0-12 s, "
+    "mean residual 3.7e-4 over 5-8 s; with the coupling to 1e-3, 1.17 a "
+    "step over 3-4 s), so the stabiliser's balance stays zero and its "
+    "0.54 kg/m^2 acts as cloth inertia, 15 times the nylon's: the "
+    "force m_a a on the cloth's nodes sums to 4-10 % of the load's "
+    "(|f| summed over the nodes, canopy.h5 at 2-12 s). A mean "
+    "acceleration of zero makes that force zero on average, so the "
+    "steady descent is not biased by it; the cloth's own dynamics "
+    "(breathing) are. Requiring the balance to converge too (dt times "
+    "its change, against the coupling's tolerance) is exact but the "
+    "balance then converges by about 0.9 per iteration while the canopy "
+    "inflates, and the main job stopped at 0.10 s (20 iterations, "
+    "residual 0.005017 against 0.005). A balance that converges in a "
+    "few iterations (the stabiliser's mass in the quasi-Newton's "
+    "unknowns, or its balance extrapolated per node) is the open "
+    "problem.", "",
+    "What moved: the main job (`7ft-default`, table above) descends at "
+    "5.62 ± 0.09 m/s (95 %) over 5-8 s, C_D0 0.826, projected diameter "
+    "1.90 m, in 2.1 minutes on 2 ranks at 1.23 coupling iterations a "
+    "step; before the sub-steps (one HHT step a time step, predictor "
+    "lastStep) it gave 5.50 m/s, C_D0 0.86, in 12.2 minutes at 4.1. The "
+    "8-cell case of tests/foamRun/flatCircular7ft descends at 3.252 m/s "
+    "at 2 s (3.300 with lastStepMean).", ""]
+
 # foamRun on OpenFOAM-12 against canopyPimpleFoam on v1912 (tests/foamRun),
 # measured by hand in an OpenFOAM-12 shell: CI has no OpenFOAM-12
 FOAMRUN_NOTES = ["## foamRun on OpenFOAM-12 (canopyFluid) against "
@@ -2214,6 +2332,8 @@ def write_report():
                    "with nested refinement (run 7ft-default)." % ", ".join(
                        run.ident for run in runs if earlier_seven(run)),
                    ""]
+        if name in SHAPE_STUDIES:
+            md += shape_lines(results)
         if name in ("resolution7ft", "resolutionT10", "resolution7ftLong"):
             md += gci_lines(results)
         if study_caveat(name):
@@ -2632,6 +2752,7 @@ def write_report():
             md += ["![%s](%s)" % (title, fig), ""]
     md += COUPLING_NOTES
     md += DIVERGENCE_NOTES
+    md += STABILISER_NOTES
     md += FOAMRUN_NOTES
     structure_lines = structure_studies()
     md += ["## The structure alone: energy and time-step studies", "",
