@@ -239,8 +239,8 @@ def read_case(case_dir, t0=-math.inf, t1=math.inf):
 
 
 def analyse(case_dir, t0, t1):
-    """The mean shape over the states written in [t0, t1], with the number
-    of states and the nominal diameter's units left to the caller."""
+    """The mean shape (mean_shape) over the states written in [t0, t1], with
+    their number and first and last times; lengths in metres."""
     mesh, states = read_case(case_dir, t0, t1)
     if not states:
         raise ShapeError("canopy.h5 holds no state in t = %g .. %g s"
