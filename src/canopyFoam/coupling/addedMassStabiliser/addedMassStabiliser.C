@@ -11,7 +11,7 @@
 
 Foam::wordList Foam::addedMassStabiliser::validKeys()
 {
-    return {"mass", "predictor", "balance", "direction"};
+    return {"mass", "predictor", "balance", "direction", "filter"};
 }
 
 
@@ -31,7 +31,8 @@ Foam::addedMassStabiliser::addedMassStabiliser
     fromLastStep_(false),
     fromStepMean_(false),
     endOfStep_(false),
-    isotropic_(false)
+    isotropic_(false),
+    triangleMean_(false)
 {
     addedMass.rejectUnknown(validKeys());
 
@@ -62,6 +63,12 @@ Foam::addedMassStabiliser::addedMassStabiliser
             "direction", {"normal", "all"}, "direction", "normal"
         )
      == "all";
+    triangleMean_ =
+        addedMass.choice
+        (
+            "filter", {"none", "triangleMean"}, "filter", "none"
+        )
+     == "triangleMean";
     const word integrator(structure.integrator());
     if (endOfStep_ && integrator != "hht" && integrator != "newmark")
     {
@@ -82,11 +89,12 @@ Foam::addedMassStabiliser::addedMassStabiliser
     triangles_ = structure.triangles();
     mass_.setSize(structure.nNodes(), Zero);
     const scalarField areas(structure.triangleAreas());
+    triangleMass_ = density*areas;
     forAll(triangles_, t)
     {
         for (const label node : triangles_[t])
         {
-            mass_[node] += density*areas[t]/3;
+            mass_[node] += triangleMass_[t]/3;
         }
     }
     direction_.setSize(structure.nNodes(), Zero);
@@ -147,11 +155,52 @@ void Foam::addedMassStabiliser::beginStep(canopyStructure& structure)
 Foam::tmp<Foam::vectorField>
 Foam::addedMassStabiliser::balancingForces() const
 {
-    if (isotropic_)
+    if (!triangleMean_)
     {
-        return mass_*balanceAcceleration_;
+        if (isotropic_)
+        {
+            return mass_*balanceAcceleration_;
+        }
+        return mass_*(direction_ & balanceAcceleration_)*direction_;
     }
-    return mass_*(direction_ & balanceAcceleration_)*direction_;
+
+    // Each triangle's added mass m_t times its nodes' mean acceleration,
+    // a third to each node: f = sum_t (m_t/9) 1_t 1_t^T abar (along the
+    // normals, d_i sum_t (m_t/9) sum_j d_j.abar_j)
+    tmp<vectorField> tforces(new vectorField(mass_.size(), Zero));
+    vectorField& forces = tforces.ref();
+    forAll(triangles_, t)
+    {
+        const triFace& tri = triangles_[t];
+        const scalar share = triangleMass_[t]/9;
+        if (isotropic_)
+        {
+            const vector f =
+                share
+               *(
+                    balanceAcceleration_[tri[0]]
+                  + balanceAcceleration_[tri[1]]
+                  + balanceAcceleration_[tri[2]]
+                );
+            for (const label node : tri)
+            {
+                forces[node] += f;
+            }
+        }
+        else
+        {
+            scalar f = 0;
+            for (const label node : tri)
+            {
+                f += direction_[node] & balanceAcceleration_[node];
+            }
+            for (const label node : tri)
+            {
+                forces[node] += share*f*direction_[node];
+            }
+        }
+    }
+    return tforces;
 }
 
 
