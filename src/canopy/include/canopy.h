@@ -512,6 +512,21 @@ canopy_status canopy_model_set_directional_added_mass(canopy_model *model,
                                                       const double *added_mass,
                                                       const double *direction,
                                                       int n);
+/* Optional added mass spread consistently over the triangles (nt doubles
+ * >= 0, nt the triangle count): triangle t moving with its nodes' mean
+ * acceleration has the inertia added_mass[t], in every direction:
+ *   (M_a a)_i = sum over i's triangles t of (added_mass[t] / 9)
+ *               (a_p + a_q + a_r)   (p, q, r: t's nodes),
+ * beside the nodes' own masses and any per-node added mass. A uniform
+ * acceleration meets a third of each adjacent triangle's value, as a
+ * lumped added mass would; a motion whose mean over every triangle is zero
+ * (the node-scale modes) meets none. It couples the nodes, so it needs
+ * integrator newmark or hht: canopy_model_advance fails with
+ * CANOPY_ERR_STATE under any other while some value is positive. All
+ * zero: none (the default). */
+canopy_status canopy_model_set_triangle_added_mass(canopy_model *model,
+                                                  const double *added_mass,
+                                                  int nt);
 
 /* Triangle markers: centroids (3*nt), unit normals (3*nt), areas (nt) and
  * velocities (3*nt, mean of the vertex velocities). Any pointer may be NULL. */

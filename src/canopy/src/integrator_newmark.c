@@ -11,7 +11,7 @@
  *   v_{n+1} = v_n + dt ((1 - gamma) a_n + gamma a_{n+1})   (seed 002 eqs. 25-26).
  * alpha = 0 is Newmark's average-acceleration rule (beta 1/4, gamma 1/2).
  * M is the nodes' inertia, including a directional added mass
- * m_i I + m_a d d^T. The unknown dx = x_{n+1} - x_n is found by Newton's
+ * m_i I + m_a d d^T and the triangles' consistent added mass (inertia.c). The unknown dx = x_{n+1} - x_n is found by Newton's
  * method on the residual above; each Newton correction solves
  *   [M / (beta dt^2) + (1 + alpha)(K + gamma / (beta dt) C)] delta = -R
  * with Jacobi-preconditioned conjugate gradients, K the tangent stiffness
@@ -23,9 +23,9 @@ typedef struct hht_coeffs {
 } hht_coeffs;
 
 /* The conjugate-gradient solver's vectors: residual, direction, J p, the
- * preconditioned residual and the tangent's scratch. */
+ * preconditioned residual, the tangent's scratch and M p. */
 typedef struct cg_vectors {
-    double *r, *p, *Ap, *z, *tmp;
+    double *r, *p, *Ap, *z, *tmp, *Mp;
 } cg_vectors;
 
 /* Newmark's and HHT's own state, 15 node vectors of scratch (the carried
@@ -34,18 +34,19 @@ typedef struct cg_vectors {
  * the Newton correction delta and the Jacobi diagonal; the CG vectors. */
 typedef struct hht_workspace {
     canopy_vectors store;
-    double *an, *Fn, *x1, *v1, *a1, *F1, *R, *dx, *delta, *diag;
+    double *an, *Fn, *x1, *v1, *a1, *F1, *R, *dx, *delta, *diag, *Ma;
     cg_vectors cg;
 } hht_workspace;
 
 static void *hht_alloc(int nodes, size_t *bytes)
 {
-    hht_workspace *w = canopy_vectors_state_alloc(sizeof *w, 15, nodes, bytes);
+    hht_workspace *w = canopy_vectors_state_alloc(sizeof *w, 17, nodes, bytes);
     if (w == NULL) return NULL;
-    double **slot[15] = {&w->an, &w->Fn,    &w->x1,   &w->v1,   &w->a1,
+    double **slot[17] = {&w->an, &w->Fn,    &w->x1,   &w->v1,   &w->a1,
                          &w->F1, &w->R,     &w->dx,   &w->delta, &w->diag,
-                         &w->cg.r, &w->cg.p, &w->cg.Ap, &w->cg.z, &w->cg.tmp};
-    for (int k = 0; k < 15; ++k) *slot[k] = canopy_vectors_at(&w->store, k);
+                         &w->Ma, &w->cg.r, &w->cg.p, &w->cg.Ap, &w->cg.z,
+                         &w->cg.tmp, &w->cg.Mp};
+    for (int k = 0; k < 17; ++k) *slot[k] = canopy_vectors_at(&w->store, k);
     return w;
 }
 
@@ -60,14 +61,15 @@ static double dot_free(const canopy_model *m, const double *a, const double *b)
     return s;
 }
 
-/* y = J u at positions x, velocities v. tmp: scratch. */
+/* y = J u at positions x, velocities v. tmp, mu: scratch. */
 static void jacobian_apply(const canopy_model *m, const hht_coeffs *c,
                            const double *x, const double *v, const double *u,
-                           double *y, double *tmp)
+                           double *y, double *tmp, double *mu)
 {
     const int n = m->nodes.count;
     canopy_tangent_stiffness(m, x, v, u, y, 1);
     canopy_tangent_damping(m, x, v, u, tmp);
+    canopy_inertia_apply_all(m, u, mu);
     const double cd = c->gamma / (c->beta * c->dt);
     const double cm = 1.0 / (c->beta * c->dt * c->dt);
     for (int i = 0; i < n; ++i) {
@@ -75,11 +77,9 @@ static void jacobian_apply(const canopy_model *m, const hht_coeffs *c,
             y[3 * i] = y[3 * i + 1] = y[3 * i + 2] = 0.0;
             continue;
         }
-        double mu[3];
-        canopy_inertia_apply(m, i, u + 3 * i, mu);
         for (int d = 0; d < 3; ++d) {
             const int k = 3 * i + d;
-            y[k] = cm * mu[d] + (1.0 + c->alpha) * (y[k] + cd * tmp[k]);
+            y[k] = cm * mu[k] + (1.0 + c->alpha) * (y[k] + cd * tmp[k]);
         }
         canopy_guide_project(m, i, y + 3 * i);
     }
@@ -112,7 +112,7 @@ static int cg_solve(canopy_model *m, const hht_coeffs *c, const cg_vectors *cg,
     double rz = dot_free(m, r, z);
     const int max_it = N < 2000 ? N + 20 : 2000 + N / 10;
     for (int it = 1; it <= max_it; ++it) {
-        jacobian_apply(m, c, x, v, p, Ap, tmp);
+        jacobian_apply(m, c, x, v, p, Ap, tmp, cg->Mp);
         const double pAp = dot_free(m, p, Ap);
         if (!(pAp > 0.0)) return -1;
         const double a = rz / pAp;
@@ -130,10 +130,67 @@ static int cg_solve(canopy_model *m, const hht_coeffs *c, const cg_vectors *cg,
     return -1;
 }
 
+/* a <- M^-1 a on the free nodes (the guided ones along their guide), for
+ * the triangles' consistent added mass, which couples the nodes: Jacobi-
+ * preconditioned conjugate gradients to 1e-12 of the right-hand side.
+ * a holds F on entry. d: scratch for the diagonal. Returns the iterations
+ * used, or -1 if not converged. */
+static int mass_solve(const canopy_model *m, const cg_vectors *cg, double *d,
+                      double *a)
+{
+    const int n = m->nodes.count, N = 3 * n;
+    double *r = cg->r, *p = cg->p, *Ap = cg->Ap, *z = cg->z;
+    for (int i = 0; i < n; ++i) {
+        double md[3];
+        canopy_inertia_diagonal(m, i, md);
+        for (int k = 0; k < 3; ++k) d[3 * i + k] = md[k];
+    }
+    canopy_triangle_inertia_diagonal(m, d);
+    for (int i = 0; i < n; ++i) {
+        for (int k = 0; k < 3; ++k) {
+            const int j = 3 * i + k;
+            r[j] = m->nodes.fixed[i] ? 0.0 : a[j];
+            if (m->nodes.fixed[i]) d[j] = 1.0;
+            a[j] = 0.0;
+        }
+        canopy_guide_project(m, i, r + 3 * i);
+    }
+    precondition(m, r, d, z);
+    for (int k = 0; k < N; ++k) p[k] = z[k];
+    const double r0 = sqrt(dot_free(m, r, r));
+    if (r0 == 0.0) return 0;
+    double rz = dot_free(m, r, z);
+    const int max_it = N < 2000 ? N + 20 : 2000 + N / 10;
+    for (int it = 1; it <= max_it; ++it) {
+        canopy_inertia_apply_all(m, p, Ap);
+        for (int i = 0; i < n; ++i) {
+            if (m->nodes.fixed[i]) {
+                Ap[3 * i] = Ap[3 * i + 1] = Ap[3 * i + 2] = 0.0;
+                continue;
+            }
+            canopy_guide_project(m, i, Ap + 3 * i);
+        }
+        const double pAp = dot_free(m, p, Ap);
+        if (!(pAp > 0.0)) return -1;
+        const double alpha = rz / pAp;
+        for (int k = 0; k < N; ++k) {
+            a[k] += alpha * p[k];
+            r[k] -= alpha * Ap[k];
+        }
+        if (sqrt(dot_free(m, r, r)) <= 1e-12 * r0) return it;
+        precondition(m, r, d, z);
+        const double rz_new = dot_free(m, r, z);
+        const double beta = rz_new / rz;
+        rz = rz_new;
+        for (int k = 0; k < N; ++k) p[k] = z[k] + beta * p[k];
+    }
+    return -1;
+}
+
 /* The step's known and trial arrays (3n doubles each). */
 typedef struct hht_state {
     const double *x0, *v0, *an, *Fn;
-    double *x1, *v1, *a1, *F1, *R;
+    double *x1, *v1, *a1, *F1, *R, *Ma;
 } hht_state;
 
 /* For the displacement dx = x_{n+1} - x_n (fixed nodes: dt v_n): x1, v1,
@@ -158,10 +215,10 @@ static double hht_residual(const canopy_model *m, const hht_coeffs *c,
                 s->v1[3 * i + d] = s->v0[3 * i + d];
             }
     canopy_forces(m, s->x1, s->v1, s->F1);
+    canopy_inertia_apply_all(m, s->a1, s->Ma);
     double ma2 = 0.0;
     for (int i = 0; i < n; ++i) {
-        double inertia[3];
-        canopy_inertia_apply(m, i, s->a1 + 3 * i, inertia);
+        const double *inertia = s->Ma + 3 * i;
         for (int d = 0; d < 3; ++d) {
             const int k = 3 * i + d;
             s->R[k] = m->nodes.fixed[i]
@@ -198,8 +255,15 @@ static canopy_status hht_step(hht_workspace *ws, canopy_model *m, double dt,
             a[d] = m->nodes.fixed[i] ? 0.0
                  : carried          ? m->nodes.acc[3 * i + d]
                                     : Fn[3 * i + d];
-        if (!m->nodes.fixed[i] && !carried) canopy_node_acceleration(m, i, a);
+        if (!m->nodes.fixed[i] && !carried && !m->triangle_added_mass)
+            canopy_node_acceleration(m, i, a);
     }
+    if (!carried && m->triangle_added_mass &&
+        mass_solve(m, &ws->cg, ws->Ma, an) < 0)
+        return canopy_fail(m, CANOPY_ERR_NOT_CONVERGED,
+                           "%s: conjugate gradients did not converge on "
+                           "the start-up acceleration M^-1 F",
+                           alpha == 0.0 ? "newmark" : "hht");
     /* Jacobi preconditioner from per-node stiffness and dashpot sums. */
     for (int k = 0; k < N; ++k) diag[k] = 0.0;
     for (int s = 0; s < m->springs.count; ++s) {
@@ -208,13 +272,17 @@ static canopy_status hht_step(hht_workspace *ws, canopy_model *m, double dt,
         diag[3 * i] += w;
         diag[3 * j] += w;
     }
+    for (int k = 0; k < N; ++k) ws->Ma[k] = 0.0;
+    canopy_triangle_inertia_diagonal(m, ws->Ma);
     for (int i = 0; i < n; ++i) {
         double md[3];
         canopy_inertia_diagonal(m, i, md);
         const double stiff = (1.0 + alpha) * diag[3 * i];
         for (int d = 0; d < 3; ++d)
             diag[3 * i + d] =
-                m->nodes.fixed[i] ? 1.0 : md[d] / (c.beta * dt * dt) + stiff;
+                m->nodes.fixed[i]
+                    ? 1.0
+                    : (md[d] + ws->Ma[3 * i + d]) / (c.beta * dt * dt) + stiff;
     }
     /* Predictor: dx = dt v_n + dt^2/2 a_n (fixed nodes: dt v_n, exact). */
     for (int k = 0; k < N; ++k) dx[k] = dt * v0[k] + 0.5 * dt * dt * an[k];
@@ -229,7 +297,7 @@ static canopy_status hht_step(hht_workspace *ws, canopy_model *m, double dt,
     gscale = sqrt(gscale);
     const double Fn_norm = sqrt(dot_free(m, Fn, Fn));
 
-    const hht_state st = {x0, v0, an, Fn, x1, v1, a1, F1, R};
+    const hht_state st = {x0, v0, an, Fn, x1, v1, a1, F1, R, ws->Ma};
     double ma_norm = 0.0;
     double res = hht_residual(m, &c, &st, dx, &ma_norm), scale = 0.0;
     int stagnated = 0;

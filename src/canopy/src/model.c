@@ -111,7 +111,8 @@ static canopy_status reserve_triangles(canopy_model *m)
                            "triangles, the most an int can count", t->count);
     int cap = next_capacity(t->capacity, t->count + 1), old = t->capacity;
     if (!grow((void **)&t->nodes, 3 * sizeof(int), old, cap) ||
-        !grow((void **)&t->dp, sizeof(double), old, cap)) {
+        !grow((void **)&t->dp, sizeof(double), old, cap) ||
+        !grow((void **)&t->added_mass, sizeof(double), old, cap)) {
         return canopy_fail(m, CANOPY_ERR_MEMORY,
                            "cannot grow triangle arrays to %d", cap);
     }
@@ -149,7 +150,7 @@ void canopy_model_destroy(canopy_model **model)
     free(m->springs.ends); free(m->springs.rest); free(m->springs.rest_vec);
     free(m->springs.k); free(m->springs.c); free(m->springs.law);
     free(m->springs.group);
-    free(m->tris.nodes); free(m->tris.dp);
+    free(m->tris.nodes); free(m->tris.dp); free(m->tris.added_mass);
     free(m->hinges.nodes); free(m->hinges.modes);
     canopy_hinge_filter_free(&m->hinges.filter);
     canopy_state_free(&m->checkpoint);
@@ -386,6 +387,7 @@ canopy_status canopy_model_add_triangle(canopy_model *model, int a, int b,
     model->tris.nodes[3 * t + 1] = b;
     model->tris.nodes[3 * t + 2] = c;
     model->tris.dp[t] = 0.0;
+    model->tris.added_mass[t] = 0.0;
     topology_changed(model);
     if (index_out) *index_out = t;
     canopy_clear_message(model);
@@ -476,6 +478,13 @@ canopy_status canopy_model_prepare(canopy_model *model)
                            "a directional added mass (set_directional_added_"
                            "mass) needs an explicit integrator, newmark or "
                            "hht, not '%s'",
+                           model->integrator->name);
+    if (model->triangle_added_mass &&
+        model->integrator != &canopy_integrator_hht &&
+        model->integrator != &canopy_integrator_newmark)
+        return canopy_fail(model, CANOPY_ERR_STATE,
+                           "a triangles' added mass (set_triangle_added_"
+                           "mass) needs integrator newmark or hht, not '%s'",
                            model->integrator->name);
     /* Each workspace is replaced only once its successor is allocated. */
     canopy_status st = canopy_stepper_prepare(model);
@@ -787,6 +796,31 @@ canopy_status canopy_model_set_directional_added_mass(canopy_model *model,
                             "set_directional_added_mass");
 }
 
+canopy_status canopy_model_set_triangle_added_mass(canopy_model *model,
+                                                  const double *added_mass,
+                                                  int nt)
+{
+    NULL_MODEL_CHECK(model);
+    canopy_status st = count_check(model, added_mass, nt, model->tris.count,
+                                   "set_triangle_added_mass");
+    if (st != CANOPY_OK) return st;
+    for (int t = 0; t < nt; ++t)
+        if (!(added_mass[t] >= 0.0) || !isfinite(added_mass[t]))
+            return canopy_fail(model, CANOPY_ERR_ARGUMENT,
+                               "set_triangle_added_mass: triangle %d value "
+                               "%g must be finite and >= 0", t,
+                               added_mass[t]);
+    int any = 0;
+    for (int t = 0; t < nt; ++t) {
+        model->tris.added_mass[t] = added_mass[t];
+        if (added_mass[t] > 0.0) any = 1;
+    }
+    model->triangle_added_mass = any;
+    model->prepared = 0; /* masses changed: re-validate */
+    canopy_clear_message(model);
+    return CANOPY_OK;
+}
+
 /* --- integration controls ------------------------------------------------ */
 
 canopy_status canopy_model_set_integrator(canopy_model *model, const char *name)
@@ -932,7 +966,7 @@ size_t canopy_model_memory_bytes(const canopy_model *model)
          (3 * sizeof(double) * 4 + 2 * sizeof(double) + 2);
     b += (size_t)model->springs.capacity *
          (2 * sizeof(int) + 6 * sizeof(double) + 2);
-    b += (size_t)model->tris.capacity * (3 * sizeof(int) + sizeof(double));
+    b += (size_t)model->tris.capacity * (3 * sizeof(int) + 2 * sizeof(double));
     b += (4 * sizeof(int) + 13 * sizeof(double)) * (size_t)model->hinges.count;
     const canopy_hinge_filter *f = &model->hinges.filter;
     if (f->start) {

@@ -56,6 +56,7 @@ typedef struct canopy_triangles {
     int count, capacity;
     int *nodes;         /* 3*count */
     double *dp;         /* pressure jump */
+    double *added_mass; /* consistent added mass (inertia.c; 0 by default) */
 } canopy_triangles;
 
 /* The hinge dashpots' high-pass filter (bending_filter.c): node i's
@@ -132,6 +133,8 @@ struct canopy_model {
 
     int prepared;               /* topology validated, workspaces allocated */
     int directional_added_mass; /* some node's added mass has a direction */
+    int triangle_added_mass;    /* some triangle has a consistent added mass
+                                   (set_triangle_added_mass, inertia.c) */
     char message[CANOPY_MESSAGE_SIZE];
 };
 
@@ -290,6 +293,16 @@ static inline void canopy_inertia_solve(const canopy_model *m, int i,
     const double inv = 1.0 / canopy_effective_mass(m, i);
     f[0] *= inv; f[1] *= inv; f[2] *= inv;
 }
+
+/* The nodes' inertia as a whole (inertia.c): the per-node masses above and
+ * the triangles' consistent added mass, sum over t of
+ * (added_mass[t] / 9) 1_t 1_t^T in every direction. y = M u over all
+ * nodes (3n doubles; the fixed nodes' rows too, which callers ignore). */
+void canopy_inertia_apply_all(const canopy_model *m, const double *u,
+                              double *y);
+/* diag += the triangles' added mass on the diagonal of M (3n doubles):
+ * sum over node i's triangles of added_mass[t] / 9, in each direction. */
+void canopy_triangle_inertia_diagonal(const canopy_model *m, double *diag);
 
 /* Whether node i slides on a guide (canopy_model_set_guide). */
 static inline int canopy_guided(const canopy_model *m, int i)

@@ -11,7 +11,7 @@
 
 Foam::wordList Foam::addedMassStabiliser::validKeys()
 {
-    return {"mass", "predictor", "balance", "direction", "filter"};
+    return {"mass", "predictor", "balance", "direction", "filter", "distribution"};
 }
 
 
@@ -32,7 +32,8 @@ Foam::addedMassStabiliser::addedMassStabiliser
     fromStepMean_(false),
     endOfStep_(false),
     isotropic_(false),
-    triangleMean_(false)
+    triangleMean_(false),
+    consistent_(false)
 {
     addedMass.rejectUnknown(validKeys());
 
@@ -69,7 +70,45 @@ Foam::addedMassStabiliser::addedMassStabiliser
             "filter", {"none", "triangleMean"}, "filter", "none"
         )
      == "triangleMean";
+    consistent_ =
+        addedMass.choice
+        (
+            "distribution", {"lumped", "consistent"}, "distribution",
+            "lumped"
+        )
+     == "consistent";
     const word integrator(structure.integrator());
+    if (consistent_)
+    {
+        if (!isotropic_)
+        {
+            addedMass.fail
+            (
+                "distribution",
+                "= consistent acts in every direction: it needs direction"
+                " all, not normal"
+            );
+        }
+        if (addedMass.dict().found("filter") && !triangleMean_)
+        {
+            addedMass.fail
+            (
+                "filter",
+                "= none contradicts distribution consistent, whose balance"
+                " is the triangles' mean acceleration (filter triangleMean)"
+            );
+        }
+        if (integrator != "hht" && integrator != "newmark")
+        {
+            addedMass.fail
+            (
+                "distribution",
+                "= consistent couples the nodes and needs the structure's"
+                " integrator.type hht or newmark, not " + integrator
+            );
+        }
+        triangleMean_ = true;
+    }
     if (endOfStep_ && integrator != "hht" && integrator != "newmark")
     {
         addedMass.fail
@@ -126,6 +165,15 @@ void Foam::addedMassStabiliser::beginStep(canopyStructure& structure)
     // (area-weighted over the adjacent triangles), or with
     // direction all in every direction (a zero direction)
     direction_ = Zero;
+    if (consistent_)
+    {
+        structure.setDirectionalAddedMass
+        (
+            scalarField(mass_.size(), Zero), direction_
+        );
+        structure.setTriangleAddedMass(triangleMass_);
+        return;
+    }
     if (isotropic_)
     {
         structure.setDirectionalAddedMass(mass_, direction_);

@@ -598,6 +598,22 @@ void Foam::canopyStructure::setDirectionalAddedMass
 }
 
 
+void Foam::canopyStructure::setTriangleAddedMass
+(
+    const scalarField& addedMass
+)
+{
+    check
+    (
+        canopy_model_set_triangle_added_mass
+        (
+            model_.get(), addedMass.cdata(), addedMass.size()
+        ),
+        FUNCTION_NAME, "canopy_model_set_triangle_added_mass"
+    );
+}
+
+
 Foam::label Foam::canopyStructure::advance(const scalar dt)
 {
     applyNodalForces();
