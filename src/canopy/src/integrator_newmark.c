@@ -93,17 +93,24 @@ static void precondition(const canopy_model *m, const double *r,
     for (int i = 0; i < m->nodes.count; ++i) canopy_guide_project(m, i, z + 3 * i);
 }
 
-/* Solve J delta = rhs by preconditioned CG to relative tolerance rtol.
- * Returns the iterations used, or -1 if not converged. */
-static int cg_solve(canopy_model *m, const hht_coeffs *c, const cg_vectors *cg,
-                    const double *x, const double *v, const double *rhs,
-                    double *delta, const double *diag, double rtol)
+/* y = A u for the operator conjugate gradients solve with; ctx: what A
+ * needs. */
+typedef void (*cg_operator)(const canopy_model *m, const void *ctx,
+                            const double *u, double *y);
+
+/* Solve A x = rhs by Jacobi-preconditioned CG (diag: A's diagonal) to
+ * relative tolerance rtol, over the free nodes and along the guided ones'
+ * guides; rhs must not be one of cg's r, p, Ap or z. Returns the
+ * iterations used, or -1 if not converged. */
+static int pcg(const canopy_model *m, cg_operator apply, const void *ctx,
+               const cg_vectors *cg, const double *rhs, double *x,
+               const double *diag, double rtol)
 {
     const int N = 3 * m->nodes.count;
-    double *r = cg->r, *p = cg->p, *Ap = cg->Ap, *z = cg->z, *tmp = cg->tmp;
+    double *r = cg->r, *p = cg->p, *Ap = cg->Ap, *z = cg->z;
     precondition(m, rhs, diag, z);
     for (int k = 0; k < N; ++k) {
-        delta[k] = 0.0;
+        x[k] = 0.0;
         r[k] = rhs[k];
         p[k] = z[k];
     }
@@ -112,12 +119,12 @@ static int cg_solve(canopy_model *m, const hht_coeffs *c, const cg_vectors *cg,
     double rz = dot_free(m, r, z);
     const int max_it = N < 2000 ? N + 20 : 2000 + N / 10;
     for (int it = 1; it <= max_it; ++it) {
-        jacobian_apply(m, c, x, v, p, Ap, tmp, cg->Mp);
+        apply(m, ctx, p, Ap);
         const double pAp = dot_free(m, p, Ap);
         if (!(pAp > 0.0)) return -1;
         const double a = rz / pAp;
         for (int k = 0; k < N; ++k) {
-            delta[k] += a * p[k];
+            x[k] += a * p[k];
             r[k] -= a * Ap[k];
         }
         if (sqrt(dot_free(m, r, r)) <= rtol * r0) return it;
@@ -130,16 +137,54 @@ static int cg_solve(canopy_model *m, const hht_coeffs *c, const cg_vectors *cg,
     return -1;
 }
 
-/* a <- M^-1 a on the free nodes (the guided ones along their guide), for
- * the triangles' consistent added mass, which couples the nodes: Jacobi-
- * preconditioned conjugate gradients to 1e-12 of the right-hand side.
- * a holds F on entry. d: scratch for the diagonal. Returns the iterations
+/* The Newton correction's operator J at positions x, velocities v. */
+typedef struct jacobian_context {
+    const hht_coeffs *c;
+    const double *x, *v;
+    double *tmp, *Mp; /* scratch */
+} jacobian_context;
+
+static void jacobian_operator(const canopy_model *m, const void *ctx,
+                              const double *u, double *y)
+{
+    const jacobian_context *j = ctx;
+    jacobian_apply(m, j->c, j->x, j->v, u, y, j->tmp, j->Mp);
+}
+
+/* Solve J delta = rhs to relative tolerance rtol. Returns the iterations
  * used, or -1 if not converged. */
+static int cg_solve(canopy_model *m, const hht_coeffs *c, const cg_vectors *cg,
+                    const double *x, const double *v, const double *rhs,
+                    double *delta, const double *diag, double rtol)
+{
+    const jacobian_context j = {c, x, v, cg->tmp, cg->Mp};
+    return pcg(m, jacobian_operator, &j, cg, rhs, delta, diag, rtol);
+}
+
+/* y = M u, the fixed nodes' rows zero, the guided ones' along the guide. */
+static void mass_operator(const canopy_model *m, const void *ctx,
+                          const double *u, double *y)
+{
+    (void)ctx;
+    canopy_inertia_apply_all(m, u, y);
+    for (int i = 0; i < m->nodes.count; ++i) {
+        if (m->nodes.fixed[i]) {
+            y[3 * i] = y[3 * i + 1] = y[3 * i + 2] = 0.0;
+            continue;
+        }
+        canopy_guide_project(m, i, y + 3 * i);
+    }
+}
+
+/* a <- M^-1 a on the free nodes (the guided ones along their guide), for
+ * the triangles' consistent added mass, which couples the nodes: to 1e-12
+ * of the right-hand side. a holds F on entry. d: scratch for the diagonal.
+ * Returns the iterations used, or -1 if not converged. */
 static int mass_solve(const canopy_model *m, const cg_vectors *cg, double *d,
                       double *a)
 {
-    const int n = m->nodes.count, N = 3 * n;
-    double *r = cg->r, *p = cg->p, *Ap = cg->Ap, *z = cg->z;
+    const int n = m->nodes.count;
+    double *rhs = cg->tmp;
     for (int i = 0; i < n; ++i) {
         double md[3];
         canopy_inertia_diagonal(m, i, md);
@@ -149,42 +194,12 @@ static int mass_solve(const canopy_model *m, const cg_vectors *cg, double *d,
     for (int i = 0; i < n; ++i) {
         for (int k = 0; k < 3; ++k) {
             const int j = 3 * i + k;
-            r[j] = m->nodes.fixed[i] ? 0.0 : a[j];
+            rhs[j] = m->nodes.fixed[i] ? 0.0 : a[j];
             if (m->nodes.fixed[i]) d[j] = 1.0;
-            a[j] = 0.0;
         }
-        canopy_guide_project(m, i, r + 3 * i);
+        canopy_guide_project(m, i, rhs + 3 * i);
     }
-    precondition(m, r, d, z);
-    for (int k = 0; k < N; ++k) p[k] = z[k];
-    const double r0 = sqrt(dot_free(m, r, r));
-    if (r0 == 0.0) return 0;
-    double rz = dot_free(m, r, z);
-    const int max_it = N < 2000 ? N + 20 : 2000 + N / 10;
-    for (int it = 1; it <= max_it; ++it) {
-        canopy_inertia_apply_all(m, p, Ap);
-        for (int i = 0; i < n; ++i) {
-            if (m->nodes.fixed[i]) {
-                Ap[3 * i] = Ap[3 * i + 1] = Ap[3 * i + 2] = 0.0;
-                continue;
-            }
-            canopy_guide_project(m, i, Ap + 3 * i);
-        }
-        const double pAp = dot_free(m, p, Ap);
-        if (!(pAp > 0.0)) return -1;
-        const double alpha = rz / pAp;
-        for (int k = 0; k < N; ++k) {
-            a[k] += alpha * p[k];
-            r[k] -= alpha * Ap[k];
-        }
-        if (sqrt(dot_free(m, r, r)) <= 1e-12 * r0) return it;
-        precondition(m, r, d, z);
-        const double rz_new = dot_free(m, r, z);
-        const double beta = rz_new / rz;
-        rz = rz_new;
-        for (int k = 0; k < N; ++k) p[k] = z[k] + beta * p[k];
-    }
-    return -1;
+    return pcg(m, mass_operator, NULL, cg, rhs, a, d, 1e-12);
 }
 
 /* The step's known and trial arrays (3n doubles each). */
