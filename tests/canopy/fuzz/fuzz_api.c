@@ -857,7 +857,7 @@ static void act_settings(fuzz *f)
     double *buf = calloc(3 * (size_t)(n > nt ? n : nt) + 3, sizeof(double));
     double *dir = calloc(3 * (size_t)n + 3, sizeof(double));
     if (!buf || !dir) { free(buf); free(dir); return; }
-    switch (rnd(f, 16)) {
+    switch (rnd(f, 17)) {
     case 0: {
         double g[3] = {pick(f, -1, 1), pick(f, -1, 1), pick(f, -12, 0)};
         before_call(f, "set_gravity", 0);
@@ -942,6 +942,14 @@ static void act_settings(fuzz *f)
         st = canopy_model_set_directional_added_mass(
             f->m, rnd(f, 20) ? buf : NULL, rnd(f, 20) ? dir : NULL,
             pick_count(f, n));
+        kind = KIND_TOPOLOGY;
+        break;
+    case 15:
+        for (int t = 0; t < nt; ++t) buf[t] = rnd(f, 50) ? uniform(f, 0, 0.01)
+                                                         : pick(f, 0, 0.01);
+        before_call(f, "set_triangle_added_mass", 0);
+        st = canopy_model_set_triangle_added_mass(f->m, rnd(f, 20) ? buf : NULL,
+                                                  pick_count(f, nt));
         kind = KIND_TOPOLOGY;
         break;
     default:
