@@ -34,8 +34,10 @@ void canopy_inertia_apply_all(const canopy_model *m, const double *u,
     if (m->triangle_added_mass) triangle_inertia_add(m, u, y);
 }
 
-void canopy_triangle_inertia_diagonal(const canopy_model *m, double *diag)
+void canopy_inertia_diagonal_all(const canopy_model *m, double *diag)
 {
+    for (int i = 0; i < m->nodes.count; ++i)
+        canopy_inertia_diagonal(m, i, diag + 3 * i);
     if (!m->triangle_added_mass) return;
     const canopy_triangles *tr = &m->tris;
     for (int t = 0; t < tr->count; ++t) {

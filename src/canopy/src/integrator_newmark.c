@@ -11,8 +11,9 @@
  *   v_{n+1} = v_n + dt ((1 - gamma) a_n + gamma a_{n+1})   (seed 002 eqs. 25-26).
  * alpha = 0 is Newmark's average-acceleration rule (beta 1/4, gamma 1/2).
  * M is the nodes' inertia, including a directional added mass
- * m_i I + m_a d d^T and the triangles' consistent added mass (inertia.c). The unknown dx = x_{n+1} - x_n is found by Newton's
- * method on the residual above; each Newton correction solves
+ * m_i I + m_a d d^T and the triangles' consistent added mass (inertia.c).
+ * The unknown dx = x_{n+1} - x_n is found by Newton's method on the
+ * residual above; each Newton correction solves
  *   [M / (beta dt^2) + (1 + alpha)(K + gamma / (beta dt) C)] delta = -R
  * with Jacobi-preconditioned conjugate gradients, K the tangent stiffness
  * (compressive geometric terms dropped, so the matrix stays SPD: a
@@ -28,10 +29,11 @@ typedef struct cg_vectors {
     double *r, *p, *Ap, *z, *tmp, *Mp;
 } cg_vectors;
 
-/* Newmark's and HHT's own state, 15 node vectors of scratch (the carried
+/* Newmark's and HHT's own state, 17 node vectors of scratch (the carried
  * acceleration is model state, nodes.acc): the step's known a_n and F_n;
  * the trial x1, v1, a1, their forces F1 and residual R; the displacement dx,
- * the Newton correction delta and the Jacobi diagonal; the CG vectors. */
+ * the Newton correction delta and the Jacobi diagonal; M a1 (and M's
+ * diagonal before the Newton iterations); the CG vectors. */
 typedef struct hht_workspace {
     canopy_vectors store;
     double *an, *Fn, *x1, *v1, *a1, *F1, *R, *dx, *delta, *diag, *Ma;
@@ -185,12 +187,7 @@ static int mass_solve(const canopy_model *m, const cg_vectors *cg, double *d,
 {
     const int n = m->nodes.count;
     double *rhs = cg->tmp;
-    for (int i = 0; i < n; ++i) {
-        double md[3];
-        canopy_inertia_diagonal(m, i, md);
-        for (int k = 0; k < 3; ++k) d[3 * i + k] = md[k];
-    }
-    canopy_triangle_inertia_diagonal(m, d);
+    canopy_inertia_diagonal_all(m, d);
     for (int i = 0; i < n; ++i) {
         for (int k = 0; k < 3; ++k) {
             const int j = 3 * i + k;
@@ -287,17 +284,14 @@ static canopy_status hht_step(hht_workspace *ws, canopy_model *m, double dt,
         diag[3 * i] += w;
         diag[3 * j] += w;
     }
-    for (int k = 0; k < N; ++k) ws->Ma[k] = 0.0;
-    canopy_triangle_inertia_diagonal(m, ws->Ma);
+    const double *md = ws->Ma;
+    canopy_inertia_diagonal_all(m, ws->Ma);
     for (int i = 0; i < n; ++i) {
-        double md[3];
-        canopy_inertia_diagonal(m, i, md);
         const double stiff = (1.0 + alpha) * diag[3 * i];
         for (int d = 0; d < 3; ++d)
-            diag[3 * i + d] =
-                m->nodes.fixed[i]
-                    ? 1.0
-                    : (md[d] + ws->Ma[3 * i + d]) / (c.beta * dt * dt) + stiff;
+            diag[3 * i + d] = m->nodes.fixed[i]
+                                  ? 1.0
+                                  : md[3 * i + d] / (c.beta * dt * dt) + stiff;
     }
     /* Predictor: dx = dt v_n + dt^2/2 a_n (fixed nodes: dt v_n, exact). */
     for (int k = 0; k < N; ++k) dx[k] = dt * v0[k] + 0.5 * dt * dt * an[k];

@@ -300,9 +300,10 @@ static inline void canopy_inertia_solve(const canopy_model *m, int i,
  * nodes (3n doubles; the fixed nodes' rows too, which callers ignore). */
 void canopy_inertia_apply_all(const canopy_model *m, const double *u,
                               double *y);
-/* diag += the triangles' added mass on the diagonal of M (3n doubles):
- * sum over node i's triangles of added_mass[t] / 9, in each direction. */
-void canopy_triangle_inertia_diagonal(const canopy_model *m, double *diag);
+/* diag = the diagonal of that M (3n doubles): each node's own
+ * (canopy_inertia_diagonal) plus the sum over its triangles of
+ * added_mass[t] / 9, in each direction. */
+void canopy_inertia_diagonal_all(const canopy_model *m, double *diag);
 
 /* Whether node i slides on a guide (canopy_model_set_guide). */
 static inline int canopy_guided(const canopy_model *m, int i)

@@ -11,7 +11,10 @@
 
 Foam::wordList Foam::addedMassStabiliser::validKeys()
 {
-    return {"mass", "predictor", "balance", "direction", "filter", "distribution"};
+    return
+    {
+        "mass", "predictor", "balance", "direction", "filter", "distribution"
+    };
 }
 
 
