@@ -882,6 +882,38 @@ RUNS += [
                     CPD18, RELAX_ONE + TO_12
                     + [(MESH_DICT, "edgeLengthPerCell", "0.83")]),
 ]
+# The cloth's stiffness in compression (fabric.compressionRatio). The
+# seed's Model-II springs resist shortening as stiffly as stretching, so
+# the inflated canopy's skirt, which must gather to close (a flat circle's
+# rim is longer than the inflated mouth's), is held out by hoop
+# compressions. Canopy cloth carries almost none: MIL-C-7020 Type I,
+# 0.003 in (76 um) thick with E t = 2919 N/m, has a plate bending
+# stiffness of at most E t^3 / 12 ~ 1.4e-6 N m, so a strip buckles
+# (wrinkles) at pi^2 B / L^2 ~ 4e-4 N/m over one fabric edge (L ~ 0.18 m)
+# and ~0.1 N/m over a 1 cm wrinkle, against a meridional tension of
+# ~15 N/m (Delta p R / 2 at ~27 Pa); a slack spring stands for the cloth
+# wrinkled between its nodes (tension-field theory). The runs bracket the
+# physical value 0 with 0.1 and 0.01, at 12 cells across D0, from rest to
+# 12 s, read over 5-12 s; the tutorial's 1 is 7ft-relax1
+def compression(ratio):
+    return [(PROPS, "fabric/compressionRatio", ratio)]
+
+
+RUNS += [
+    seven_from_rest("7ft-compression%s" % r, "box 8 D0 wide, 12 cells "
+                    "across D0, cloth at %s of its stiffness in "
+                    "compression" % r, edits=compression(r))
+    for r in ("0.1", "0.01", "0")
+] + [
+    seven_from_rest("7ft-cpd%d-compression0" % n, "box 8 D0 wide, %d cells "
+                    "across D0, cloth without stiffness in compression" % n,
+                    ["-cellsPerDiameter", "%d" % n],
+                    compression("0") + TO_12)
+    for n in (18, 27)
+] + [
+    seven_long("7ft-compression0-40s", "box 8 D0 wide, 12 cells across D0, "
+               "cloth without stiffness in compression", compression("0")),
+]
 # The pressure solver: the coupling ends the outer loop after the fluid
 # has been solved, so no outer iteration is known to be the last in time
 # for pFinal; this run solves p to relTol 0 (pFinal's setting) on every
@@ -1035,6 +1067,11 @@ STUDIES = [
      "coupling to 1e-3)",
      ["7ft-tol1e-3-relax1-40s", "7ft-cpd18-tol1e-3-relax1-40s",
       "7ft-cpd27-tol1e-3-relax1-40s"]),
+    ("wrinkling7ft", "7 ft canopy: the cloth's stiffness in compression "
+     "(fabric.compressionRatio; from rest to 12 s, read over 5-12 s)",
+     ["7ft-relax1", "7ft-compression0.1", "7ft-compression0.01",
+      "7ft-compression0", "7ft-cpd18-compression0",
+      "7ft-cpd27-compression0", "7ft-compression0-40s"]),
     ("tolerance7ftCpd18", "7 ft canopy: the coupling's tolerance against "
      "the runs' scatter (18 cells across D0, Aitken's factor from 1; "
      "splitx: the same run with the box split across the flow)",
@@ -1400,7 +1437,7 @@ def _f(x, fmt="%.3g"):
 
 # Studies whose report gets the canopy's shape over each run's interval
 SHAPE_STUDIES = ("default7ft", "resolution7ft", "tolerance7ftLong",
-                 "resolution7ftLong")
+                 "resolution7ftLong", "wrinkling7ft")
 
 
 def shape_lines(results):
