@@ -37,9 +37,9 @@ Definitions used throughout (stated in the summary too):
   S0 = pi D0^2 / 4 the nominal area; and C_D from the mean pressure force
   against gravity, -F . g/|g|, with the same V and S0.
 
-- the canopy's shape over the interval (crown height, skirt radius, creases
-  by ring) from postProcessing/canopy/canopy.h5: shape.py states the
-  definitions.
+- the canopy's shape over the interval (crown height, skirt radius,
+  silhouette, creases by ring) from postProcessing/canopy/canopy.h5:
+  shape.py states the definitions.
 
 Only numpy is needed to analyse the time series; the shape needs h5py and
 is reported as not read without it (or without canopy.h5); matplotlib is
@@ -781,11 +781,14 @@ def shape_summary(form, D0):
     return "\n".join([
         "  shape        crown %.3g m above the skirt (%.3g D0); skirt radius "
         "%.3g m (%.3g .. %.3g), largest radius %.3g m (%.3g D0) about the "
-        "payload-canopy axis; mean of %d states written in the interval"
+        "payload-canopy axis%s; mean of %d states written in the interval"
         % (form["crownHeight"], form["crownHeight"] / D0,
            form["skirtRadiusMean"], form["skirtRadiusMin"],
            form["skirtRadiusMax"], form["largestRadius"],
-           form["largestRadius"] / D0, form["states"]),
+           form["largestRadius"] / D0,
+           "; silhouette's diameter %.3g m (%.3g D0)" % (
+               form["silhouetteDiameter"], form["silhouetteDiameter"] / D0)
+           if "silhouetteDiameter" in form else "", form["states"]),
         "  creases      fold angle between neighbouring cloth triangles by "
         "ring (s = 0 crown .. 1 skirt: %s): %s deg; folded beyond %g deg: "
         "%s %%" % (

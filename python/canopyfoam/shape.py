@@ -8,6 +8,12 @@ Definitions (stated in bin/canopy-report's summary too):
 - a cloth node's radial position s runs from 0 at the crown (the apex, or
   the vent's hem) to 1 at the skirt: 1 - d/d_max, d its shortest path to the
   skirt along the cloth's springs at their rest lengths;
+- the silhouette is the cloth's projection on the plane normal to the axis
+  (the union of its triangles' projections, sampled on a grid of
+  SILHOUETTE_CELLS pixels across its larger extent at the pixels'
+  centres); its diameter is that of the circle of equal area, the
+  projected diameter of a canopy whose gores bulge between the lines
+  (the largest radius is the bulges' tips);
 - the fold angle of an edge shared by two triangles is the angle between
   their normals (0 on a smooth surface, 180 degrees where the cloth folds
   back on itself); an edge is folded when that angle exceeds 90 degrees.
@@ -26,6 +32,7 @@ import numpy as np
 GROUP_FABRIC, GROUP_TAPE, GROUP_PAYLOAD = 0, 1, 3
 RING_EDGES = (0.0, 0.3, 0.5, 0.7, 0.85, 1.0)
 FOLDED_DEGREES = 90.0
+SILHOUETTE_CELLS = 256
 
 
 class ShapeError(Exception):
@@ -153,6 +160,43 @@ def triangle_normals(x, triangles):
     return n / np.where(norm > 0.0, norm, 1.0)[:, None]
 
 
+def silhouette_area(points, triangles, cells=SILHOUETTE_CELLS):
+    """The area of the union of the 2-D triangles (points: n x 2), counted
+    on a grid of `cells` pixels across the larger extent at the pixels'
+    centres: off by at most half a pixel's width times the outline's
+    length."""
+    p = np.asarray(points, dtype=float)
+    tri = np.asarray(triangles, dtype=int)
+    used = p[np.unique(tri)]
+    lo, hi = used.min(axis=0), used.max(axis=0)
+    h = max(hi[0] - lo[0], hi[1] - lo[1]) / cells
+    if h <= 0.0:
+        return 0.0
+    shape = (int(math.ceil((hi[0] - lo[0]) / h)) + 1,
+             int(math.ceil((hi[1] - lo[1]) / h)) + 1)
+    covered = np.zeros(shape, dtype=bool)
+    for a, b, c in tri:
+        A, B, C = p[a], p[b], p[c]
+        det = (B[0] - A[0]) * (C[1] - A[1]) - (C[0] - A[0]) * (B[1] - A[1])
+        if det == 0.0:
+            continue
+        tlo = np.floor((np.minimum(np.minimum(A, B), C) - lo) / h - 0.5)
+        thi = np.ceil((np.maximum(np.maximum(A, B), C) - lo) / h - 0.5)
+        i0, j0 = max(int(tlo[0]), 0), max(int(tlo[1]), 0)
+        i1 = min(int(thi[0]), shape[0] - 1)
+        j1 = min(int(thi[1]), shape[1] - 1)
+        if i1 < i0 or j1 < j0:
+            continue
+        X, Y = np.meshgrid(lo[0] + (np.arange(i0, i1 + 1) + 0.5) * h,
+                           lo[1] + (np.arange(j0, j1 + 1) + 0.5) * h,
+                           indexing="ij")
+        u = ((X - A[0]) * (C[1] - A[1]) - (C[0] - A[0]) * (Y - A[1])) / det
+        v = ((B[0] - A[0]) * (Y - A[1]) - (X - A[0]) * (B[1] - A[1])) / det
+        inside = (u >= 0.0) & (v >= 0.0) & (u + v <= 1.0)
+        covered[i0:i1 + 1, j0:j1 + 1] |= inside
+    return float(covered.sum()) * h * h
+
+
 def snapshot(mesh, x):
     """The shape of one state x (nodes x 3) of `mesh`: a dict."""
     x = np.asarray(x, dtype=float)
@@ -167,6 +211,13 @@ def snapshot(mesh, x):
     height = rel @ axis
     radius = np.linalg.norm(rel - np.outer(height, axis), axis=1)
     skirt_h = height[mesh.skirt].mean()
+    e1 = np.cross(axis, [1.0, 0.0, 0.0])
+    if np.linalg.norm(e1) < 0.5:
+        e1 = np.cross(axis, [0.0, 1.0, 0.0])
+    e1 /= np.linalg.norm(e1)
+    e2 = np.cross(axis, e1)
+    area = silhouette_area(np.column_stack((rel @ e1, rel @ e2)),
+                           mesh.triangles)
     n = triangle_normals(x, mesh.triangles)
     cosang = np.einsum("ij,ij->i", n[mesh.edge_triangles[:, 0]],
                        n[mesh.edge_triangles[:, 1]])
@@ -186,6 +237,7 @@ def snapshot(mesh, x):
         "skirtRadiusMin": float(radius[mesh.skirt].min()),
         "skirtRadiusMax": float(radius[mesh.skirt].max()),
         "largestRadius": float(radius[mesh.cloth_nodes].max()),
+        "silhouetteDiameter": math.sqrt(4.0 * area / math.pi),
         "foldedFraction": float((fold > FOLDED_DEGREES).mean())
         if len(fold) else float("nan"),
         "rings": rings,
@@ -196,7 +248,8 @@ def mean_shape(snapshots):
     """The plain mean of snapshots' numbers (snapshots are written at a
     fixed interval)."""
     keys = ("crownHeight", "skirtRadiusMean", "skirtRadiusMin",
-            "skirtRadiusMax", "largestRadius", "foldedFraction")
+            "skirtRadiusMax", "largestRadius", "silhouetteDiameter",
+            "foldedFraction")
     out = {k: float(np.mean([s[k] for s in snapshots])) for k in keys}
     out["rings"] = []
     for k, ring in enumerate(snapshots[0]["rings"]):

@@ -911,6 +911,12 @@ RUNS += [
                     compression("0") + TO_12)
     for n in (18, 27)
 ] + [
+    seven_from_rest("7ft-edge0.83-compression0", "box 8 D0 wide, 12 cells "
+                    "across D0, fabric edge 0.83 cells, cloth without "
+                    "stiffness in compression",
+                    edits=compression("0") + [(MESH_DICT, "edgeLengthPerCell",
+                                               "0.83")]),
+] + [
     seven_long("7ft-compression0-40s", "box 8 D0 wide, 12 cells across D0, "
                "cloth without stiffness in compression", compression("0")),
 ]
@@ -1070,7 +1076,8 @@ STUDIES = [
     ("wrinkling7ft", "7 ft canopy: the cloth's stiffness in compression "
      "(fabric.compressionRatio; from rest to 12 s, read over 5-12 s)",
      ["7ft-relax1", "7ft-compression0.1", "7ft-compression0.01",
-      "7ft-compression0", "7ft-cpd18-compression0",
+      "7ft-compression0", "7ft-edge0.83-compression0",
+      "7ft-cpd18-compression0",
       "7ft-cpd27-compression0", "7ft-compression0-40s"]),
     ("tolerance7ftCpd18", "7 ft canopy: the coupling's tolerance against "
      "the runs' scatter (18 cells across D0, Aitken's factor from 1; "
@@ -1451,8 +1458,9 @@ def shape_lines(results):
             continue
         D0 = r["parameters"]["nominalDiameter"]["value"]
         rings = form["rings"]
+        sil = form.get("silhouetteDiameter")
         rows.append("| %s | %s-%s s (%d states) | %.3f | %.3f (%.3f-%.3f) | "
-                    "%.3f | %s | %s |" % (
+                    "%.3f | %s | %s | %s |" % (
                         run.ident, _f(form["timeFirst"], "%.4g"),
                         _f(form["timeLast"], "%.4g"), form["states"],
                         form["crownHeight"] / D0,
@@ -1460,6 +1468,7 @@ def shape_lines(results):
                         form["skirtRadiusMin"] / D0,
                         form["skirtRadiusMax"] / D0,
                         form["largestRadius"] / D0,
+                        _f(sil / D0 if sil is not None else None, "%.3f"),
                         " / ".join("%.0f" % q["foldMean"] for q in rings),
                         " / ".join("%.0f" % (100 * q["foldedFraction"])
                                    for q in rings)))
@@ -1471,16 +1480,17 @@ def shape_lines(results):
             "report`, python/canopyfoam/shape.py; the states canopy.h5 "
             "holds, every 0.25 s): the crown's height above the skirt, "
             "the skirt's and the largest radius about the payload-canopy "
-            "axis, in D0; the fold angle between neighbouring cloth "
+            "axis, and the silhouette's diameter (the circle of the area "
+            "the cloth covers seen along the axis), in D0; the fold angle between neighbouring cloth "
             "triangles and the share of edges folded beyond 90 degrees "
             "by ring of the cloth (s = %s, 0 at the crown, 1 at the "
             "skirt, along the cloth at rest). Runs made before the shape "
             "was recorded, or whose canopy.h5 is not on this machine, "
             "are not listed." % ring_names, "",
             "| run | states | crown height / D0 | skirt radius / D0 (min-"
-            "max) | largest radius / D0 | fold angle by ring [deg] | "
-            "folded beyond 90 deg [%] |",
-            "|---|---|---|---|---|---|---|"] + rows + [""]
+            "max) | largest radius / D0 | silhouette diameter / D0 | "
+            "fold angle by ring [deg] | folded beyond 90 deg [%] |",
+            "|---|---|---|---|---|---|---|---|"] + rows + [""]
 
 
 def run_row(run, rec, why):
