@@ -920,6 +920,25 @@ RUNS += [
     seven_long("7ft-compression0-40s", "box 8 D0 wide, 12 cells across D0, "
                "cloth without stiffness in compression", compression("0")),
 ]
+# The fluid side alone: the 7 ft tutorial's cloth held as a rigid,
+# impermeable flat disc of D0 (every node fixed, porosity off, the guide
+# wire off) in a 5 m/s stream (the frame's wind; Re = U D0 / nu = 7e5),
+# on the tutorial's mesh at 12, 18 and 27 cells across D0, from rest to
+# 12 s (28 D0/U), read over 4-12 s. Published: C_D = 1.1-1.17 on the
+# disc's area for Re above 1e4, independent of Re (the flow separates at
+# the sharp rim)
+DISC = [(PROPS, "fixedNodes", "{ all true; }"),
+        (PROPS, "fabric/porosity/alpha", "0"),
+        (PROPS, "guideWire/payload", "false"),
+        (PROPS, "guideWire/apex", "false"),
+        (PROPS, "coupling/frame/wind", "(0 0 5)")]
+RUNS += [
+    Run("disc-cpd%d" % n, SEVEN, "rigid impermeable disc of D0 in a 5 m/s "
+        "stream, box 8 D0 wide, %d cells across D0, to 12 s; interval 4-12 "
+        "s" % n, [] if n == 12 else ["-cellsPerDiameter", "%d" % n],
+        DISC + TO_12, steady_start=4, steady_end=12)
+    for n in (12, 18, 27)
+]
 # The pressure solver: the coupling ends the outer loop after the fluid
 # has been solved, so no outer iteration is known to be the last in time
 # for pFinal; this run solves p to relTol 0 (pFinal's setting) on every
@@ -1079,6 +1098,9 @@ STUDIES = [
       "7ft-compression0", "7ft-edge0.83-compression0",
       "7ft-cpd18-compression0",
       "7ft-cpd27-compression0", "7ft-compression0-40s"]),
+    ("disc7ft", "The fluid side alone: a rigid impermeable disc of D0 = "
+     "2.134 m in a 5 m/s stream on the 7 ft tutorial's mesh",
+     ["disc-cpd12", "disc-cpd18", "disc-cpd27"]),
     ("tolerance7ftCpd18", "7 ft canopy: the coupling's tolerance against "
      "the runs' scatter (18 cells across D0, Aitken's factor from 1; "
      "splitx: the same run with the box split across the flow)",
