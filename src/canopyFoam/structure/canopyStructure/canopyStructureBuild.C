@@ -557,7 +557,7 @@ void readIntegrator(const scopedEntryReader& top, structureSpec& s)
 }
 
 
-// fixedNodes: the rim, or everything
+// fixedNodes: the rim, or every cloth node (read after guideWire)
 void readFixedNodes(const scopedEntryReader& top, structureSpec& s)
 {
     const dictionary* d = top.optionalDict("fixedNodes");
@@ -568,6 +568,16 @@ void readFixedNodes(const scopedEntryReader& top, structureSpec& s)
     const scopedEntryReader fr(*d, "fixedNodes");
     s.fixSkirt = fr.flag("skirt", false);
     s.fixAll = fr.flag("all", false);
+    if (s.fixAll && s.guideApex)
+    {
+        fr.fail
+        (
+            "all",
+            "= true pins the apex, which guideWire.apex = true (the default"
+            " when guideWire is given) puts on the wire: set"
+            " guideWire.apex false"
+        );
+    }
     fr.warnUnused(wordList{"skirt", "all"});
 }
 
