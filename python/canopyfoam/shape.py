@@ -75,8 +75,9 @@ def boundary_loops(owners):
 
 
 def radial_position(n_nodes, springs, rest_lengths, skirt_nodes, cloth):
-    """s per node (NaN off the cloth): 1 - d/d_max, d the shortest path to
-    the skirt over the given springs at their rest lengths."""
+    """(s, d_max): s per node (NaN off the cloth) is 1 - d/d_max, d the
+    shortest path to the skirt over the given springs at their rest
+    lengths; d_max, the longest, is the cloth's radius at rest."""
     adjacency = defaultdict(list)
     for (i, j), l0 in zip(np.asarray(springs, dtype=int), rest_lengths):
         if cloth[i] and cloth[j]:
@@ -102,7 +103,7 @@ def radial_position(n_nodes, springs, rest_lengths, skirt_nodes, cloth):
     if dmax <= 0.0:
         raise ShapeError("the cloth has no node away from its skirt")
     s[reached] = 1.0 - d[reached] / dmax
-    return s
+    return s, float(dmax)
 
 
 class CanopyMesh(object):
@@ -137,9 +138,9 @@ class CanopyMesh(object):
             return sum(rest.get(e, 0.0) for e in loop)
         skirt = max(loops, key=loop_length)
         self.skirt = np.array(sorted(set(n for e in skirt for n in e)))
-        self.s = radial_position(len(groups), springs[cloth_springs],
-                                 np.asarray(rest_lengths)[cloth_springs],
-                                 self.skirt, self.cloth)
+        self.s, self.rest_radius = radial_position(
+            len(groups), springs[cloth_springs],
+            np.asarray(rest_lengths)[cloth_springs], self.skirt, self.cloth)
         interior = [(e, ts) for e, ts in owners.items() if len(ts) == 2]
         self.edge_triangles = np.array([ts for _, ts in interior], dtype=int)\
             .reshape(-1, 2)

@@ -37,10 +37,16 @@ them; the model has neither.
 
 Run as:  python3 -m canopyfoam.tension_field_shape   (from python/)
 prints Dp/D0, the skirt's diameter and the crown's depth above the skirt
-for line lengths of 0.85 to 1.5 D0.
+for line lengths of 0.85 to 1.5 D0;
+         python3 -m canopyfoam.tension_field_shape CASE T0 T1 [LINES/D0]
+compares a run's mean profile over [T0, T1] (its canopy.h5, shape.py's
+axis and radial position s, which follows the cloth at rest) with the
+model's, ring by ring: the cloth's mean radius and depth below the crown
+against r(s) and z(s) (lines of 1 D0 unless given; needs h5py).
 """
 
 import math
+import sys
 
 import numpy as np
 
@@ -124,7 +130,54 @@ def mylar_balloon(steps=2000):
     return _summary(_first_root(rim), steps)
 
 
+def compare(case_dir, t0, t1, line_length=2.0):
+    """Rows (s, nodes, r, r_model, largest r, depth, depth_model) in R0 of
+    a run's profile averaged over the states in [t0, t1], by ring of the
+    cloth (s bins of 1/8 about the rings' mean s)."""
+    from . import shape
+    mesh, states = shape.read_case(case_dir, t0, t1)
+    if not states:
+        raise shape.ShapeError("canopy.h5 holds no state in t = %g .. %g s"
+                               % (t0, t1))
+    model = canopy(line_length)["profile"]
+    s_model = np.linspace(0.0, 1.0, len(model))
+    radius, depth = [], []
+    for _, x in states:
+        x = np.asarray(x, dtype=float)
+        centre = x[mesh.cloth_nodes].mean(axis=0)
+        axis = centre - x[mesh.payload]
+        axis /= np.linalg.norm(axis)
+        rel = x - centre
+        h = rel @ axis
+        radius.append(np.linalg.norm(rel - np.outer(h, axis), axis=1))
+        depth.append(h[mesh.cloth_nodes].max() - h)
+    radius, depth = np.mean(radius, axis=0), np.mean(depth, axis=0)
+    rest = mesh.s  # 0 at the crown, 1 at the skirt
+    r0 = mesh.rest_radius  # the cloth's radius at rest
+    rows = []
+    for centre_s in np.arange(0.0, 1.0 + 1e-9, 0.125):
+        m = np.isfinite(rest) & (np.abs(rest - centre_s) < 0.0625)
+        if not m.any():
+            continue
+        s_mean = float(rest[m].mean())
+        i = int(np.argmin(np.abs(s_model - s_mean)))
+        rows.append((s_mean, int(m.sum()), float(radius[m].mean()) / r0,
+                     float(model[i, 0]), float(radius[m].max()) / r0,
+                     float(depth[m].mean()) / r0, float(model[i, 1])))
+    return rows
+
+
 def main():
+    if len(sys.argv) > 1:
+        case_dir, t0, t1 = sys.argv[1], float(sys.argv[2]), float(sys.argv[3])
+        lines = float(sys.argv[4]) if len(sys.argv) > 4 else 1.0
+        print("%s over %g-%g s against the cloth without hoop stress "
+              "(lines %g D0); lengths in R0" % (case_dir, t0, t1, lines))
+        print("%6s %6s %8s %8s %8s %8s %8s" % ("s", "nodes", "r", "model",
+                                               "r max", "depth", "model"))
+        for row in compare(case_dir, t0, t1, 2.0 * lines):
+            print("%6.2f %6d %8.3f %8.3f %8.3f %8.3f %8.3f" % row)
+        return
     print("flat circular canopy, cloth without hoop stress, uniform "
           "pressure jump (lengths in D0)")
     print("%10s %8s %10s %10s %10s" % ("lines/D0", "k R0", "Dp/D0",
