@@ -198,11 +198,12 @@ def silhouette_area(points, triangles, cells=SILHOUETTE_CELLS):
     return float(covered.sum()) * h * h
 
 
-def snapshot(mesh, x):
-    """The shape of one state x (nodes x 3) of `mesh`: a dict."""
+def axial_coordinates(mesh, x):
+    """(axis, rel, height, radius) of a state x (nodes x 3): the unit axis
+    from the payload to the cloth's mean, each node's position relative to
+    that mean, its height along the axis and its distance from it."""
     x = np.asarray(x, dtype=float)
-    cloth = x[mesh.cloth_nodes]
-    centre = cloth.mean(axis=0)
+    centre = x[mesh.cloth_nodes].mean(axis=0)
     axis = centre - x[mesh.payload]
     length = np.linalg.norm(axis)
     if length == 0.0:
@@ -210,7 +211,14 @@ def snapshot(mesh, x):
     axis /= length
     rel = x - centre
     height = rel @ axis
-    radius = np.linalg.norm(rel - np.outer(height, axis), axis=1)
+    return axis, rel, height, np.linalg.norm(rel - np.outer(height, axis),
+                                             axis=1)
+
+
+def snapshot(mesh, x):
+    """The shape of one state x (nodes x 3) of `mesh`: a dict."""
+    x = np.asarray(x, dtype=float)
+    axis, rel, height, radius = axial_coordinates(mesh, x)
     skirt_h = height[mesh.skirt].mean()
     e1 = np.cross(axis, [1.0, 0.0, 0.0])
     if np.linalg.norm(e1) < 0.5:
@@ -266,7 +274,7 @@ def h5_path(case_dir):
 
 def read_case(case_dir, t0=-math.inf, t1=math.inf):
     """(mesh, [(time, x), ...]) from <case>/postProcessing/canopy/canopy.h5,
-    the states written in [t0, t1]."""
+    the states written in [t0, t1] (none: ShapeError)."""
     try:
         import h5py
     except ImportError:
@@ -289,6 +297,9 @@ def read_case(case_dir, t0=-math.inf, t1=math.inf):
                     states.append((t, step["x"][:]))
     except (OSError, KeyError) as e:
         raise ShapeError("%s: %s" % (os.path.relpath(path, case_dir), e))
+    if not states:
+        raise ShapeError("canopy.h5 holds no state in t = %g .. %g s"
+                         % (t0, t1))
     return mesh, states
 
 
@@ -296,9 +307,6 @@ def analyse(case_dir, t0, t1):
     """The mean shape (mean_shape) over the states written in [t0, t1], with
     their number and first and last times; lengths in metres."""
     mesh, states = read_case(case_dir, t0, t1)
-    if not states:
-        raise ShapeError("canopy.h5 holds no state in t = %g .. %g s"
-                         % (t0, t1))
     out = mean_shape([snapshot(mesh, x) for _, x in states])
     out.update(states=len(states), timeFirst=states[0][0],
                timeLast=states[-1][0])

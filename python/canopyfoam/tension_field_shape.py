@@ -136,20 +136,12 @@ def compare(case_dir, t0, t1, line_length=2.0):
     cloth (s bins of 1/8 about the rings' mean s)."""
     from . import shape
     mesh, states = shape.read_case(case_dir, t0, t1)
-    if not states:
-        raise shape.ShapeError("canopy.h5 holds no state in t = %g .. %g s"
-                               % (t0, t1))
     model = canopy(line_length)["profile"]
     s_model = np.linspace(0.0, 1.0, len(model))
     radius, depth = [], []
     for _, x in states:
-        x = np.asarray(x, dtype=float)
-        centre = x[mesh.cloth_nodes].mean(axis=0)
-        axis = centre - x[mesh.payload]
-        axis /= np.linalg.norm(axis)
-        rel = x - centre
-        h = rel @ axis
-        radius.append(np.linalg.norm(rel - np.outer(h, axis), axis=1))
+        _, _, h, r = shape.axial_coordinates(mesh, x)
+        radius.append(r)
         depth.append(h[mesh.cloth_nodes].max() - h)
     radius, depth = np.mean(radius, axis=0), np.mean(depth, axis=0)
     rest = mesh.s  # 0 at the crown, 1 at the skirt

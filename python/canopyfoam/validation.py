@@ -2716,8 +2716,9 @@ def write_report():
             md += disc_lines(results)
         if name == "wrinkling7ft":
             md += gci_lines([(run, rec) for run, rec in results
-                             if run.ident.endswith("compression0")
-                             and "edge" not in run.ident])
+                             if run.ident in ("7ft-compression0",
+                                              "7ft-cpd18-compression0",
+                                              "7ft-cpd27-compression0")])
             md += ["Why the cloth's stiffness in compression, what the "
                    "cloth without it should look like, and what the runs "
                    "show: section \"The cloth's stiffness in "
