@@ -680,16 +680,16 @@ RUNS += [seven("7ft-free-cpd18", "free flight: box 8 D0 wide, 18 cells "
 
 
 RUNS += [
-    seven("7ft-default", "the tutorial's default (on the guide wire): box 8 "
-          "D0 wide, 12 cells across D0 at the canopy, to 12 s",
-          end_time=None),
+    seven("7ft-stiff", "the tutorial's default until the cloth lost its "
+          "stiffness in compression (on the guide wire): box 8 D0 wide, 12 "
+          "cells across D0 at the canopy, to 12 s", end_time=None),
 ]
 # Domain: the box's width at the default resolution at the canopy
 RUNS += [seven("7ft-w%g" % w, "box %g D0 wide, 12 cells across D0, to 8 s"
                % w, edits=[(MESH_DICT, "domain/width", "%g" % w)])
          for w in (5.6, 11)]
 # Resolution at the canopy (every level and the fabric's edge follow)
-RESOLUTIONS = (18, 27, 40)
+RESOLUTIONS = (18, 27)
 RUNS += [seven("7ft-cpd%d" % n, "box 8 D0 wide, %d cells across D0, to 8 s"
                % n, ["-cellsPerDiameter", "%d" % n])
          for n in RESOLUTIONS]
@@ -967,6 +967,57 @@ RUNS += [
     seven("7ft-LES", "box 8 D0 wide, 12 cells across D0, LES (WALE, LUST "
           "convection), to 8 s", edits=LES),
 ]
+# The rigid disc with the WALE LES model and LUST convection: does the
+# laminar wake's under-resolved shear layer make the disc's drag depend on
+# the cells (1.235 / 1.214 / 1.310 laminar at 12 / 18 / 27)?
+RUNS += [
+    Run("disc-LES-cpd%d" % n, SEVEN, "rigid impermeable disc of D0 in a 5 "
+        "m/s stream, LES (WALE, LUST convection), box 8 D0 wide, %d cells "
+        "across D0, to 12 s; interval 4-12 s" % n,
+        [] if n == 12 else ["-cellsPerDiameter", "%d" % n],
+        DISC + TO_12 + LES, steady_start=4, steady_end=12)
+    for n in (12, 18, 27)
+]
+# Every 7 ft run above was defined on the tutorial with the seed's
+# stiff cloth (Model-II springs as stiff in compression as in tension) and
+# an endTime of 12 s. These edits restore both where a run's own edits do
+# not set them, so each run's definition keeps saying what it ran; the
+# tutorial now has fabric.compressionRatio 0 and an endTime of 40 s
+SEVEN_STIFF = [(PROPS, "fabric/compressionRatio", "1"),
+               ("system/controlDict", "endTime", "12")]
+for _run in RUNS:
+    if _run.tutorial == SEVEN:
+        _set = set((e[0], e[1]) for e in _run.edits)
+        _run.edits = _run.edits + [e for e in SEVEN_STIFF
+                                   if (e[0], e[1]) not in _set]
+# The main job: the tutorial as it is (cloth without stiffness in
+# compression), from rest to 45 s, read over the last third, 30-45 s, as
+# its Allrun's report does, long after the descent has levelled
+# (7ft-compression0-40s: 2 s means within 5.08-5.41 m/s from 12 s)
+RUNS += [
+    Run("7ft-default", SEVEN, "the tutorial's default (on the guide wire): "
+        "box 8 D0 wide, 12 cells across D0 at the canopy, cloth without "
+        "stiffness in compression, to 45 s; interval 30-45 s",
+        reference="7ft", steady_start=30, steady_end=45),
+]
+# The tutorial as it is at 18 and 27 cells across D0, over the main job's
+# interval (30-45 s): the resolution of the steady descent (the 27-cell
+# level takes about 2.5 hours on 2 ranks: run it in parts with --continue)
+RUNS += [
+    Run("7ft-cpd%d-default" % n, SEVEN, "the tutorial's default at %d cells "
+        "across D0: box 8 D0 wide, cloth without stiffness in compression, "
+        "to 45 s; interval 30-45 s" % n, ["-cellsPerDiameter", "%d" % n],
+        reference="7ft", steady_start=30, steady_end=45)
+    for n in (18, 27)
+]
+# Resolution at the canopy with the tutorial's cloth: the finest level of
+# the study resolution7ft (12, 18 and 27 cells are the runs of the study
+# wrinkling7ft)
+RUNS += [
+    seven_from_rest("7ft-cpd40-compression0", "box 8 D0 wide, 40 cells "
+                    "across D0, cloth without stiffness in compression",
+                    ["-cellsPerDiameter", "40"], compression("0") + TO_12),
+]
 # The other tutorials as they are (wide box, nested refinement)
 RUNS += [
     Run("T10-default", T10, "the tutorial's default: 100 kg, box 8 D0 wide, "
@@ -1059,15 +1110,26 @@ def earlier_seven(run):
 
 STUDIES = [
     ("default7ft", "7 ft canopy: the main job (the tutorial's default)",
-     ["7ft-default", "7ft-free", "7ft-narrow-balanced", "7ft-narrow-default",
+     ["7ft-default", "7ft-stiff", "7ft-free", "7ft-narrow-balanced", "7ft-narrow-default",
       "7ft-h0.15-fullLoad-16s"]),
     ("domain7ft", "7 ft canopy on the guide wire: the box's width (12 cells across D0 at the canopy)",
-     ["7ft-w5.6", "7ft-default", "7ft-w11"]),
+     ["7ft-w5.6", "7ft-stiff", "7ft-w11"]),
     ("tutorialsWide", "The other tutorials on the wide box (8 D0, nested refinement, 11 cells across D0)",
      ["T10-default", "T10-m163-default", "G11-default", "G11-folded-default",
       "C9-default", "cross-default", "cross-folded-default"]),
-    ("resolution7ft", "7 ft canopy on the guide wire: cells across D0 at the canopy (box 8 D0 wide)",
-     ["7ft-default", "7ft-cpd18", "7ft-cpd27", "7ft-cpd40"]),
+    ("resolution7ft", "7 ft canopy on the guide wire: cells across D0 at "
+     "the canopy, the tutorial's cloth without stiffness in compression "
+     "(box 8 D0 wide; from rest to 12 s, read over 5-12 s)",
+     ["7ft-compression0", "7ft-cpd18-compression0", "7ft-cpd27-compression0",
+      "7ft-cpd40-compression0"]),
+    ("resolutionDefault7ft", "7 ft canopy on the guide wire as the "
+     "tutorial is: cells across D0 in steady descent (from rest to 45 s, "
+     "read over 30-45 s)",
+     ["7ft-default", "7ft-cpd18-default", "7ft-cpd27-default"]),
+    ("resolution7ftStiff", "7 ft canopy on the guide wire: cells across D0 "
+     "at the canopy, the seed's cloth as stiff in compression as in tension "
+     "(box 8 D0 wide; to 8 s, read over 5-8 s)",
+     ["7ft-stiff", "7ft-cpd18", "7ft-cpd27"]),
     ("freeDomain7ft", "7 ft canopy in free flight: the box's width, before the swing (12 cells across D0)",
      ["7ft-free-w2.8", "7ft-free-w5.6", "7ft-free", "7ft-free-w11"]),
     ("freeResolution7ft", "7 ft canopy in free flight: cells across D0, before the swing",
@@ -1075,13 +1137,13 @@ STUDIES = [
     ("freeDescent7ft", "7 ft canopy in free flight: the swinging descent "
      "over 10-40 s (12 cells across D0)", ["7ft-free40"]),
     ("timeStep7ft", "7 ft canopy: the time step (12 cells across D0)",
-     ["7ft-default", "7ft-co0.25", "7ft-co0.25-12s"]),
+     ["7ft-stiff", "7ft-co0.25", "7ft-co0.25-12s"]),
     ("edgeLength7ft", "7 ft canopy: the structure's resolution (12 cells "
      "across D0; fabric edge in finest cells)",
-     ["7ft-edge0.83", "7ft-default", "7ft-edge1.88"]),
+     ["7ft-edge0.83", "7ft-stiff", "7ft-edge1.88"]),
     ("relaxation7ft", "7 ft canopy: Aitken's factor from 0.3 and from 1, "
      "and the coupling's tolerance (12 and 18 cells across D0)",
-     ["7ft-default", "7ft-relax1", "7ft-tol1e-3", "7ft-tol1e-3-relax1",
+     ["7ft-stiff", "7ft-relax1", "7ft-tol1e-3", "7ft-tol1e-3-relax1",
       "7ft-tol5e-4-relax1", "7ft-cpd18", "7ft-cpd18-relax1",
       "7ft-cpd18-tol1e-3", "7ft-cpd18-tol1e-3-relax1",
       "7ft-cpd18-tol5e-4-relax1"]),
@@ -1109,6 +1171,9 @@ STUDIES = [
     ("disc7ft", "The fluid side alone: a rigid impermeable disc of D0 = "
      "2.134 m in a 5 m/s stream on the 7 ft tutorial's mesh",
      ["disc-cpd12", "disc-cpd18", "disc-cpd27"]),
+    ("discLES7ft", "The fluid side alone with LES: the rigid disc of "
+     "study disc7ft with the WALE model and LUST convection",
+     ["disc-LES-cpd12", "disc-LES-cpd18", "disc-LES-cpd27"]),
     ("tolerance7ftCpd18", "7 ft canopy: the coupling's tolerance against "
      "the runs' scatter (18 cells across D0, Aitken's factor from 1; "
      "splitx: the same run with the box split across the flow)",
@@ -1131,10 +1196,10 @@ STUDIES = [
      "the canopy (box 8 D0 wide)", ["T10-m163-w8", "T10-m163-cpd20", "T10-m163-cpd30"]),
     ("pressureSolver7ft", "7 ft canopy: the pressure solver's tolerance "
      "(p relTol 0.01 and 0 on the outer iterations; 12 cells across D0)",
-     ["7ft-default", "7ft-pTight"]),
+     ["7ft-stiff", "7ft-pTight"]),
     ("turbulence7ft", "7 ft canopy: laminar against LES (WALE, LUST "
      "convection; 12 cells across D0)",
-     ["7ft-default", "7ft-LUST", "7ft-LES"]),
+     ["7ft-stiff", "7ft-LUST", "7ft-LES"]),
     ("mesh7ft", "7 ft canopy: mesh convergence",
      ["7ft-h0.30", "7ft-h0.20", "7ft-h0.15"]),
     ("duration7ft", "7 ft canopy: is 4 s long enough? (the default run to 8 s, with and without hinge dashpots)",
@@ -1473,7 +1538,8 @@ def _f(x, fmt="%.3g"):
 
 
 # Studies whose report gets the canopy's shape over each run's interval
-SHAPE_STUDIES = ("default7ft", "resolution7ft", "tolerance7ftLong",
+SHAPE_STUDIES = ("default7ft", "resolution7ft", "resolution7ftStiff",
+                 "tolerance7ftLong",
                  "resolution7ftLong", "wrinkling7ft")
 
 
@@ -1706,7 +1772,7 @@ def resolution_estimates(results, fineness=None):
 
 # Studies of a body held still in a stream: a table of the force on it
 # (disc_table) instead of the parachute's
-FORCE_STUDIES = ("disc7ft",)
+FORCE_STUDIES = ("disc7ft", "discLES7ft")
 
 
 def disc_coefficient(a):
@@ -1744,15 +1810,32 @@ def disc_table(records):
     return rows
 
 
-def disc_lines(results):
-    """What the disc's table means, and the GCI of C_D over three
-    levels."""
+def disc_gci_lines(results):
+    """The GCI of the disc's C_D over its three levels, as markdown."""
     from . import gci as gci_mod
     done = []
     for run, rec in results:
         a = rec and rec["analysis"]
         if a and rec["complete"]:
             done.append((cells_per_diameter(run), disc_coefficient(a)[3]))
+    if len(done) != 3:
+        return ["Grid convergence of C_D: needs three complete levels, "
+                "has %d." % len(done), ""]
+    done.sort(key=lambda x: -x[0])
+    out = gci_mod.gci([1.0 / n for n, _ in done], [c for _, c in done],
+                      p_formal=1.0, p_max=3.0)
+    return ["Grid convergence of C_D (%s at %s cells across D0): %s, "
+            "observed order %s, extrapolated %.3f, GCI of the finest "
+            "%.1f %%." % (
+                " / ".join("%.3f" % c for _, c in done),
+                " / ".join("%g" % n for n, _ in done), out["kind"],
+                "—" if out["order"] is None else "%.2f" % out["order"],
+                out["extrapolated"], 100 * out["gci"]), ""]
+
+
+def disc_lines(results):
+    """What the disc's table means, and the GCI of C_D over three
+    levels."""
     lines = ["C_D = F / (rho U^2 S0 / 2) with F the mean force of the "
              "immersed boundary on the disc against the stream over 4-12 s "
              "(canopy.dat's force, the pressure jump's resultant), U = %g "
@@ -1779,21 +1862,16 @@ def disc_lines(results):
              "and 1.37-1.53 over 10-40 s on 12 cells (7ft-tol1e-3-relax1-40s, "
              "7ft-compression0-40s); the handbook's C_D0 and Dp/D0 for "
              "flat circular canopies imply 1.5-1.8." % DISC_SPEED, ""]
-    if len(done) == 3:
-        done.sort(key=lambda x: -x[0])
-        out = gci_mod.gci([1.0 / n for n, _ in done], [c for _, c in done],
-                          p_formal=1.0, p_max=3.0)
-        lines += ["Grid convergence of C_D (%s at %s cells across D0): %s, "
-                  "observed order %s, extrapolated %.3f, GCI of the finest "
-                  "%.1f %%." % (
-                      " / ".join("%.3f" % c for _, c in done),
-                      " / ".join("%g" % n for n, _ in done), out["kind"],
-                      "—" if out["order"] is None else "%.2f" % out["order"],
-                      out["extrapolated"], 100 * out["gci"]), ""]
-    else:
-        lines += ["Grid convergence of C_D: needs three complete levels, "
-                  "has %d." % len(done), ""]
-    return lines
+    return lines + disc_gci_lines(results)
+
+
+def disc_les_lines(results):
+    """What the disc's LES runs show against the laminar ones, and their
+    GCI."""
+    return ["The same disc, C_D defined as in study disc7ft, with the WALE "
+            "eddy viscosity (Nicoud & Ducros 1999) and 75 %% central "
+            "convection (LUST) instead of the laminar linear upwind."
+            % (), ""] + disc_gci_lines(results)
 
 
 def gci_lines(results, fineness=None, unit="cells across D0"):
@@ -1920,7 +1998,12 @@ def fmt_half(h):
 # printed with the study's section, its converged values and the main job's
 # summary line
 STUDY_CAVEATS = {
-    "resolution7ft": "its runs are read over 5-8 s, a transient: on 18 "
+    "resolution7ft": "its runs are read over 5-12 s, a transient: on 12 "
+    "cells the descent falls from 6.0 to 4.8 m/s inside it and levels at "
+    "5.1-5.4 m/s from 12 s (7ft-compression0-40s), so the levels' "
+    "transients, not their steady states, are compared; the main job "
+    "reads 30-45 s: run the levels long enough for a steady state",
+    "resolution7ftStiff": "its runs are read over 5-8 s, a transient: on 18 "
     "cells the descent rises from 5.32 m/s over 5-8 s to 5.73 at 12 s "
     "(7ft-cpd18-tol1e-3-relax1), and on 12 cells the wake's symmetry "
     "breaks at about 9 s (over 10-38 s the 12-cell C_D0 was 0.95 +- 0.08: "
@@ -2708,12 +2791,15 @@ def write_report():
                    ""]
         if name in SHAPE_STUDIES:
             md += shape_lines(results)
-        if name in ("resolution7ft", "resolutionT10", "resolution7ftLong"):
+        if name in ("resolution7ft", "resolution7ftStiff", "resolutionT10",
+                    "resolution7ftLong"):
             md += gci_lines(results)
         if study_caveat(name):
             md += ["**Caveat.** " + study_caveat(name), ""]
         if name == "disc7ft":
             md += disc_lines(results)
+        if name == "discLES7ft":
+            md += disc_les_lines(results)
         if name == "wrinkling7ft":
             md += gci_lines([(run, rec) for run, rec in results
                              if run.ident in ("7ft-compression0",
@@ -2735,9 +2821,9 @@ def write_report():
             md += ["7ft-co0.25-12s is 7ft-co0.25 run on to 12 s: in "
                    "7ft-co0.25 the canopy closes from 6.5 s (projected "
                    "diameter 1.95 to 1.69 m by 8 s, the descent rising to "
-                   "6.1 m/s), which 7ft-default does not.", ""]
+                   "6.1 m/s), which 7ft-stiff does not.", ""]
         if name == "relaxation7ft":
-            md += ["7ft-default and 7ft-cpd18 are read over 5-8 s, the "
+            md += ["7ft-stiff and 7ft-cpd18 are read over 5-8 s, the "
                    "other runs over 5-12 s (each run's own interval, in "
                    "the table). On 12 cells across D0 the coupling's "
                    "tolerance (5e-3, 1e-3, 5e-4) and Aitken's starting "
@@ -2883,7 +2969,8 @@ def write_report():
                        "criterion: below 1 %%)." % (
                            w1, w2, c1, c2, 100 * abs(c2 - c1) / c2), ""]
         if name in ("default7ft", "domain7ft", "resolution7ft",
-                    "freeDomain7ft", "freeResolution7ft", "freeDescent7ft"):
+                    "resolution7ftStiff", "freeDomain7ft",
+                    "freeResolution7ft", "freeDescent7ft"):
             mass = None
             for run, rec in results:
                 if rec is not None and rec["analysis"] is not None:
@@ -2897,9 +2984,16 @@ def write_report():
                 md += ["The tutorial's default runs on the drop test's "
                        "guide wire (`guideWire` in constant/canopyProperties: "
                        "the payload and the canopy's apex slide on a vertical "
-                       "wire), read over 5–8 s like every run of its "
-                       "studies. 7ft-free is the same case in free flight "
-                       "(the tutorial's default until the guide wire), read "
+                       "wire) with cloth that has no stiffness in "
+                       "compression (`fabric.compressionRatio 0`: section "
+                       "\"The cloth's stiffness in compression\"), from rest "
+                       "to 45 s, read over 30–45 s, long after the descent "
+                       "has levelled. 7ft-stiff is the default until then: the "
+                       "seed's cloth as stiff in compression as in tension, "
+                       "to 12 s, read over 5–8 s like the runs of the "
+                       "studies made with it. 7ft-free is the same case in "
+                       "free flight (the tutorial's default until the guide "
+                       "wire), read "
                        "over 4–7 s before its swing: from about 6.5 s the "
                        "parachute swings, and over 8–12 s it descends at "
                        "4.60 ± 0.94 m/s with the suspension up to 47°.", ""]

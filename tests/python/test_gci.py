@@ -174,9 +174,9 @@ def test_caveat():
     saved = dict(validation.STUDY_CAVEATS)
     try:
         validation.STUDY_CAVEATS.clear()
-        plain = report._converged_line("resolution7ft", 0.8)
-        validation.STUDY_CAVEATS["resolution7ft"] = "a test's caveat"
-        warned = report._converged_line("resolution7ft", 0.8)
+        plain = report._converged_line("resolution7ftStiff", 0.8)
+        validation.STUDY_CAVEATS["resolution7ftStiff"] = "a test's caveat"
+        warned = report._converged_line("resolution7ftStiff", 0.8)
     finally:
         validation.STUDY_CAVEATS.clear()
         validation.STUDY_CAVEATS.update(saved)

@@ -5,7 +5,7 @@ Usage: python3 figures.py mainjob <case dir> <wall seconds>
 Prints BENCH lines (name value unit) and '# ' comment lines.
 
 mainjob: C_D0 of the case over the interval the 7 ft study reads (the
-run 7ft-default's steady interval in python/canopyfoam/validation.py),
+steady interval of its first run in python/canopyfoam/validation.py),
 against the finest run of the study resolution7ft and its GCI (bin/
 canopy-validate converged resolution7ft, from the committed records).
 
@@ -27,11 +27,11 @@ from canopyfoam import report as rep          # noqa: E402
 from canopyfoam import validation as val      # noqa: E402
 
 STUDY = "resolution7ft"
-INTERVAL_RUN = "7ft-default"
 
 
 def interval():
-    run = val.RUN_BY_ID[INTERVAL_RUN]
+    """The interval every level of STUDY is read over (its first run's)."""
+    run = val.RUN_BY_ID[dict((s[0], s[2]) for s in val.STUDIES)[STUDY][0]]
     return run.steady_start, run.steady_end
 
 
