@@ -546,6 +546,11 @@ NARROW_BOXES = {
 NARROW_BOX_ENTRY = "narrowBox"
 
 
+def narrow(run):
+    """Whether a run restores its tutorial's earlier narrow box."""
+    return bool(run.edits) and run.edits[0][1] == NARROW_BOX_ENTRY
+
+
 def narrow_box(tutorial):
     """The edits that restore a tutorial's earlier narrow box."""
     return [("system/blockMeshDict", NARROW_BOX_ENTRY, NARROW_BOXES[tutorial]),
@@ -981,8 +986,8 @@ RUNS += [
 # Every 7 ft run above was defined on the tutorial with the seed's
 # stiff cloth (Model-II springs as stiff in compression as in tension) and
 # an endTime of 12 s. These edits restore both where a run's own edits do
-# not set them, so each run's definition keeps saying what it ran; the
-# tutorial now has fabric.compressionRatio 0 and an endTime of 40 s
+# not set them, so each run's definition keeps saying what it ran (the
+# tutorial now has fabric.compressionRatio 0)
 SEVEN_STIFF = [(PROPS, "fabric/compressionRatio", "1"),
                ("system/controlDict", "endTime", "12")]
 for _run in RUNS:
@@ -1033,8 +1038,7 @@ RUNS += [
 # resolution (the narrow boxes, meshed by blockMesh, have none)
 SEVEN_TWELVE = [(MESH_DICT, "cellsPerDiameter", "12")]
 for _run in RUNS:
-    if (_run.tutorial == SEVEN
-            and not (_run.edits and _run.edits[0][1] == NARROW_BOX_ENTRY)
+    if (_run.tutorial == SEVEN and not narrow(_run)
             and "-cellsPerDiameter" not in _run.options
             and "-cellSize" not in _run.options
             and not any(e[:2] == SEVEN_TWELVE[0][:2] for e in _run.edits)):
@@ -1127,10 +1131,6 @@ def earlier_scheme(run):
     return (run.tutorial in EARLIER_END_TIME and narrow(run)
             and not all(e in run.edits for e in FULL_LOAD))
 
-
-def narrow(run):
-    """Whether a run restores its tutorial's earlier narrow box."""
-    return bool(run.edits) and run.edits[0][1] == NARROW_BOX_ENTRY
 
 
 def earlier_seven(run):
