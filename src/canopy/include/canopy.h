@@ -454,6 +454,19 @@ canopy_status canopy_model_set_bending_damping_filter(canopy_model *model,
 canopy_status canopy_model_set_fabric_compression(canopy_model *model,
                                                   double ratio);
 
+/* The pressure jump's load dp A n / 3 per triangle node (set_pressure_jump)
+ * on the shape the nodes have when a step or an advance starts, held over
+ * its sub-steps (frozen != 0), or on the shape of every force evaluation
+ * (0, the default: a follower load). A fluid solver sees the cloth once a
+ * time step, so within the step its load is a force, not a pressure that
+ * turns with the cloth: a follower load turns with each triangle, also
+ * with the folds finer than the fluid's cells, where a triangle that has
+ * folded over is pushed further over. Outside step and advance (e.g.
+ * canopy_model_get_load) the load follows the current shape either way. */
+canopy_status canopy_model_set_pressure_frozen(canopy_model *model,
+                                               int frozen);
+int canopy_model_pressure_frozen(const canopy_model *model);
+
 /* Runaway detection: a step that leaves any node faster than this [m/s]
  * fails with CANOPY_ERR_DIVERGED (as does any NaN/Inf). Default 1e4;
  * pass INFINITY to check only for NaN/Inf. */

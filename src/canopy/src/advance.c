@@ -98,6 +98,22 @@ static canopy_status raw_step(canopy_model *model, double dt, int substep)
     return CANOPY_OK;
 }
 
+/* With the pressure frozen (set_pressure_frozen): its load on the shape at
+ * the start of a step or advance, held until release_pressure. */
+static void hold_pressure(canopy_model *model)
+{
+    if (!model->pressure_frozen) return;
+    double *held = canopy_vectors_at(&model->pressure_step, 0);
+    for (int i = 0; i < 3 * model->nodes.count; ++i) held[i] = 0.0;
+    canopy_pressure_forces(model, model->nodes.x, held);
+    model->pressure_held = 1;
+}
+
+static void release_pressure(canopy_model *model)
+{
+    model->pressure_held = 0;
+}
+
 canopy_status canopy_model_step(canopy_model *model, double dt)
 {
     if (model == NULL) return CANOPY_ERR_ARGUMENT;
@@ -108,7 +124,9 @@ canopy_status canopy_model_step(canopy_model *model, double dt)
     if (st != CANOPY_OK) return st;
     if ((st = canopy_state_save(model, &model->rollback)) != CANOPY_OK)
         return st;
+    hold_pressure(model);
     st = raw_step(model, dt, 0);
+    release_pressure(model);
     if (st != CANOPY_OK) {
         canopy_state_load(model, &model->rollback);
         return st;
@@ -165,13 +183,16 @@ canopy_status canopy_model_advance(canopy_model *model, double dt,
         return st;
     const double t_end = model->t + dt;
     int taken = 0;
+    hold_pressure(model);
     for (int k = 0; k < n; ++k) {
         st = step_or_halve(model, sub, 0, &taken);
         if (st != CANOPY_OK) {
+            release_pressure(model);
             canopy_state_load(model, &model->rollback);
             return st;
         }
     }
+    release_pressure(model);
     model->t = t_end;
     if (substeps_out) *substeps_out = taken;
     canopy_clear_message(model);

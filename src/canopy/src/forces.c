@@ -56,7 +56,7 @@ static void spring_forces(const canopy_model *m, const double *x,
 }
 
 /* Pressure load dp * A * n per triangle, 1/3 to each vertex (NOTES §3). */
-static void pressure_forces(const canopy_model *m, const double *x, double *f)
+void canopy_pressure_forces(const canopy_model *m, const double *x, double *f)
 {
     const canopy_triangles *t = &m->tris;
     for (int k = 0; k < t->count; ++k) {
@@ -87,7 +87,12 @@ void canopy_forces(const canopy_model *m, const double *x, const double *v,
     spring_forces(m, x, v, f);
     if (m->hinges.count && !m->bending_implicit)
         canopy_hinge_forces(m, x, v, f);
-    pressure_forces(m, x, f);
+    if (m->pressure_held) {
+        const double *held = canopy_vectors_at(&m->pressure_step, 0);
+        for (int i = 0; i < 3 * n->count; ++i) f[i] += held[i];
+    } else {
+        canopy_pressure_forces(m, x, f);
+    }
 }
 
 void canopy_accelerations(const canopy_model *m, const double *x,

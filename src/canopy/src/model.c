@@ -158,6 +158,7 @@ void canopy_model_destroy(canopy_model **model)
     canopy_stepper_free(&m->stepper);
     canopy_hinge_solver_destroy(&m->hinge_solver);
     canopy_vectors_free(&m->bound_sums);
+    canopy_vectors_free(&m->pressure_step);
     free(m);
     *model = NULL;
 }
@@ -497,6 +498,16 @@ canopy_status canopy_model_prepare(canopy_model *model)
                                "for %d nodes", n->count);
         canopy_vectors_free(&model->bound_sums);
         model->bound_sums = sums;
+    }
+    if (model->pressure_step.nodes != n->count ||
+        model->pressure_step.data == NULL) {
+        canopy_vectors held;
+        if (canopy_vectors_alloc(&held, 1, n->count) != 0)
+            return canopy_fail(model, CANOPY_ERR_MEMORY,
+                               "cannot allocate the held pressure load for "
+                               "%d nodes", n->count);
+        canopy_vectors_free(&model->pressure_step);
+        model->pressure_step = held;
     }
     if ((st = canopy_hinges_build(model)) != CANOPY_OK) return st;
     if ((st = canopy_hinge_solver_prepare(model)) != CANOPY_OK) return st;
@@ -947,6 +958,20 @@ canopy_status canopy_model_set_fabric_compression(canopy_model *model,
     return CANOPY_OK;
 }
 
+canopy_status canopy_model_set_pressure_frozen(canopy_model *model,
+                                               int frozen)
+{
+    NULL_MODEL_CHECK(model);
+    model->pressure_frozen = frozen ? 1 : 0;
+    canopy_clear_message(model);
+    return CANOPY_OK;
+}
+
+int canopy_model_pressure_frozen(const canopy_model *model)
+{
+    return model ? model->pressure_frozen : 0;
+}
+
 canopy_status canopy_model_set_speed_limit(canopy_model *model, double vmax)
 {
     NULL_MODEL_CHECK(model);
@@ -980,6 +1005,7 @@ size_t canopy_model_memory_bytes(const canopy_model *model)
     b += model->stepper.bytes;
     b += canopy_hinge_solver_bytes(model->hinge_solver);
     b += canopy_vectors_bytes(&model->bound_sums);
+    b += canopy_vectors_bytes(&model->pressure_step);
     b += 9 * sizeof(double) * (size_t)model->checkpoint.count;
     b += 9 * sizeof(double) * (size_t)model->rollback.count;
     return b;

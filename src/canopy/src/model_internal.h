@@ -106,6 +106,10 @@ struct canopy_model {
     double fabric_compression; /* the cloth's Model-II springs' stiffness in
                                   compression over their stiffness (1: as
                                   in tension) */
+    int pressure_frozen;    /* the pressure load held over each step or
+                               advance (set_pressure_frozen) */
+    int pressure_held;      /* pressure_step holds the load of the step or
+                               advance under way (advance.c) */
 
     double t;
     int acc_valid;      /* nodes.acc holds the last HHT step's acceleration */
@@ -130,6 +134,8 @@ struct canopy_model {
                                           (NULL unless they are on) */
     canopy_vectors bound_sums;         /* canopy_model_frequency_bound's
                                           per-node sums (one vector) */
+    canopy_vectors pressure_step;      /* the pressure load's nodal forces
+                                          held over a step (one vector) */
 
     int prepared;               /* topology validated, workspaces allocated */
     int directional_added_mass; /* some node's added mass has a direction */
@@ -168,9 +174,13 @@ canopy_status canopy_reject(const canopy_model *model, canopy_status status,
 canopy_status canopy_model_prepare(canopy_model *model);
 
 /* Forces (3*n) at positions x, velocities v: springs, dashpots, gravity,
- * pressure, extra loads. Fixed nodes get their force too (a reaction). */
+ * pressure (the held load while pressure_held), extra loads. Fixed nodes
+ * get their force too (a reaction). */
 void canopy_forces(const canopy_model *model, const double *x, const double *v,
                    double *f);
+/* Add the pressure jumps' load on the shape x to f (3*n). */
+void canopy_pressure_forces(const canopy_model *model, const double *x,
+                            double *f);
 /* Hinge dashpots (bending.c): build the hinges from the triangles; add
  * their forces to f; add C w to y (w at fixed nodes counts as zero, fixed
  * rows untouched); add each node's Gershgorin row sum of C to

@@ -857,7 +857,7 @@ static void act_settings(fuzz *f)
     double *buf = calloc(3 * (size_t)(n > nt ? n : nt) + 3, sizeof(double));
     double *dir = calloc(3 * (size_t)n + 3, sizeof(double));
     if (!buf || !dir) { free(buf); free(dir); return; }
-    switch (rnd(f, 17)) {
+    switch (rnd(f, 18)) {
     case 0: {
         double g[3] = {pick(f, -1, 1), pick(f, -1, 1), pick(f, -12, 0)};
         before_call(f, "set_gravity", 0);
@@ -951,6 +951,10 @@ static void act_settings(fuzz *f)
         st = canopy_model_set_triangle_added_mass(f->m, rnd(f, 20) ? buf : NULL,
                                                   pick_count(f, nt));
         kind = KIND_TOPOLOGY;
+        break;
+    case 16:
+        before_call(f, "set_pressure_frozen", 0);
+        st = canopy_model_set_pressure_frozen(f->m, rnd(f, 3) - 1);
         break;
     default:
         before_call(f, "set_time", 0);

@@ -125,6 +125,7 @@ Foam::canopyCoupling::canopyCoupling(const fvMesh& mesh)
     (
         new couplingParts(coupling, rho_, mesh, structure_, ibSeconds_)
     );
+    structure_.setPressureHeld(parts_->load().pressureHeld());
     iterate_.reset
     (
         new interfaceIterate(structure_, parts_->frame(), tolerance, Uref, rms)

@@ -458,6 +458,16 @@ void Foam::canopyStructure::setPressureJump(const scalarField& dp)
 }
 
 
+void Foam::canopyStructure::setPressureHeld(const bool held)
+{
+    check
+    (
+        canopy_model_set_pressure_frozen(model_.get(), held ? 1 : 0),
+        FUNCTION_NAME, "canopy_model_set_pressure_frozen"
+    );
+}
+
+
 const Foam::wordList& Foam::canopyStructure::nodalForceNames()
 {
     static const wordList names

@@ -16,9 +16,10 @@ namespace Foam
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::clothLoad::clothLoad(const scalar rho)
+Foam::clothLoad::clothLoad(const scopedEntryReader& load, const scalar rho)
 :
-    rho_(rho)
+    rho_(rho),
+    pressureHeld_(load.flag("pressureHeld", false))
 {}
 
 

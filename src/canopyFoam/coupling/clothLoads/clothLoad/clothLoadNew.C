@@ -9,7 +9,7 @@
 
 Foam::wordList Foam::clothLoad::validKeys()
 {
-    return {"type", "tangential"};
+    return {"type", "tangential", "pressureHeld"};
 }
 
 

@@ -26,7 +26,7 @@ Foam::clothLoads::ibForce::ibForce
     const scalar rho
 )
 :
-    clothLoad(rho),
+    clothLoad(load, rho),
     tangential_(load.flag("tangential", false))
 {}
 

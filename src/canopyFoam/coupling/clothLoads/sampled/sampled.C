@@ -26,7 +26,7 @@ Foam::clothLoads::sampled::sampled
     const scalar rho
 )
 :
-    clothLoad(rho)
+    clothLoad(load, rho)
 {
     if (load.flag("tangential", false))
     {
