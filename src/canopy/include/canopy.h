@@ -462,7 +462,7 @@ canopy_status canopy_model_set_fabric_compression(canopy_model *model,
  * turns with the cloth: a follower load turns with each triangle, also
  * with the folds finer than the fluid's cells, where a triangle that has
  * folded over is pushed further over. Outside step and advance (e.g.
- * canopy_model_get_load) the load follows the current shape either way. */
+ * canopy_model_get_forces) the load follows the current shape either way. */
 canopy_status canopy_model_set_pressure_frozen(canopy_model *model,
                                                int frozen);
 int canopy_model_pressure_frozen(const canopy_model *model);
