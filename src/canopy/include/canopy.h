@@ -338,6 +338,18 @@ canopy_status canopy_model_get_acceleration_state(const canopy_model *model,
 canopy_status canopy_model_set_acceleration_state(canopy_model *model,
                                                   const double *a, int n,
                                                   int valid);
+/* The whole motion state at once, exactly as given, as
+ * canopy_model_read_state loads it from a file: time t, positions x,
+ * velocities v and, when acc_valid, the integrator's carried acceleration
+ * acc (3*n doubles each; acc may be NULL when acc_valid is 0). For a copy
+ * of another model's state (its get_* values: a parallel run's ranks), so
+ * a guided node's vectors are not projected onto its guide again, which
+ * would change their last bits. Every value is checked (finite, counts)
+ * before anything changes; on failure the model is unchanged. */
+canopy_status canopy_model_set_state(canopy_model *model, double t,
+                                     const double *x, const double *v,
+                                     const double *acc, int acc_valid,
+                                     int n);
 /* Node masses (n doubles) and fixed flags (n ints). */
 canopy_status canopy_model_get_masses(const canopy_model *model, double *mass,
                                       int n);

@@ -643,6 +643,42 @@ canopy_status canopy_model_set_acceleration_state(canopy_model *model,
     return st;
 }
 
+canopy_status canopy_model_set_state(canopy_model *model, double t,
+                                     const double *x, const double *v,
+                                     const double *acc, int acc_valid, int n)
+{
+    NULL_MODEL_CHECK(model);
+    if (!isfinite(t))
+        return canopy_fail(model, CANOPY_ERR_ARGUMENT,
+                           "set_state: time is not finite");
+    canopy_status st = count_check(model, x, n, model->nodes.count,
+                                   "set_state (positions)");
+    if (st == CANOPY_OK)
+        st = count_check(model, v, n, model->nodes.count,
+                         "set_state (velocities)");
+    if (st == CANOPY_OK && acc_valid)
+        st = count_check(model, acc, n, model->nodes.count,
+                         "set_state (acceleration)");
+    if (st != CANOPY_OK) return st;
+    const double *arrays[3] = {x, v, acc_valid ? acc : NULL};
+    const char *names[3] = {"position", "velocity", "acceleration"};
+    for (int a = 0; a < 3; ++a)
+        for (int i = 0; arrays[a] != NULL && i < 3 * n; ++i)
+            if (!isfinite(arrays[a][i]))
+                return canopy_fail(model, CANOPY_ERR_ARGUMENT,
+                                   "set_state: component %d of node %d's "
+                                   "%s is not finite", i % 3, i / 3,
+                                   names[a]);
+    copy_array(model->nodes.x, x, 3 * sizeof(double) * (size_t)n);
+    copy_array(model->nodes.v, v, 3 * sizeof(double) * (size_t)n);
+    if (acc_valid)
+        copy_array(model->nodes.acc, acc, 3 * sizeof(double) * (size_t)n);
+    model->acc_valid = acc_valid ? 1 : 0;
+    model->t = t;
+    canopy_clear_message(model);
+    return CANOPY_OK;
+}
+
 canopy_status canopy_model_set_nodal_forces(canopy_model *model,
                                             const double *f, int n)
 {

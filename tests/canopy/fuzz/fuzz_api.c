@@ -983,7 +983,7 @@ static void act_state(fuzz *f)
     canopy_status st;
     int kind = KIND_QUERY;
     canopy_model_get_positions(f->m, buf, n);
-    switch (rnd(f, 24)) {
+    switch (rnd(f, 25)) {
     case 0:
         for (int i = 0; i < 3 * n; ++i)
             buf[i] += rnd(f, 40) ? uniform(f, -1e-3, 1e-3) : pick(f, -1, 1);
@@ -1097,6 +1097,22 @@ static void act_state(fuzz *f)
         before_call(f, "get_gravity", 0);
         st = canopy_model_get_gravity(f->m, out);
         break;
+    case 23: {
+        /* the whole state: positions nudged, velocities and acceleration
+         * from the fuzzer's values (NaN, huge, -0 among them) */
+        for (int i = 0; i < 3 * n; ++i) {
+            buf[i] += rnd(f, 40) ? uniform(f, -1e-3, 1e-3) : pick(f, -1, 1);
+            buf2[i] = rnd(f, 40) ? uniform(f, -1, 1) : pick(f, -1, 1);
+        }
+        const int valid = rnd(f, 3) - 1;
+        before_call(f, "set_state", 0);
+        st = canopy_model_set_state(f->m, pick(f, 0, 10), out,
+                                    rnd(f, 8) ? buf2 : NULL,
+                                    rnd(f, 4) ? buf2 : NULL, valid,
+                                    pick_count(f, n));
+        kind = KIND_STATE;
+        break;
+    }
     default:
         if (n > 400) { st = CANOPY_OK; break; }
         before_call(f, "max_frequency", 0);

@@ -430,18 +430,20 @@ void Foam::canopyStructure::readState
         if (!Pstream::master())
         {
             canopy_model* m = model_.get();
-            // Positions and velocities first: setting them clears the
-            // carried acceleration, which is restored after
-            check(canopy_model_set_positions(m, x.cdata(), n), FUNCTION_NAME, "canopy_model_set_positions");
-            check(canopy_model_set_velocities(m, v.cdata(), n), FUNCTION_NAME, "canopy_model_set_velocities");
+            // The master's state exactly as it read it (set_state: the
+            // setters one by one would project the guided nodes' vectors
+            // again and change their last bits)
             check
             (
-                canopy_model_set_acceleration_state(m, acc.cdata(), n, accValid),
-                FUNCTION_NAME, "canopy_model_set_acceleration_state"
+                canopy_model_set_state
+                (
+                    m, stepTime, x.cdata(), v.cdata(), acc.cdata(), accValid,
+                    n
+                ),
+                FUNCTION_NAME, "canopy_model_set_state"
             );
             check(canopy_model_set_pressure_jump(m, dp.cdata(), nt), FUNCTION_NAME, "canopy_model_set_pressure_jump");
             check(canopy_model_set_nodal_forces(m, f.cdata(), n), FUNCTION_NAME, "canopy_model_set_nodal_forces");
-            check(canopy_model_set_time(m, stepTime), FUNCTION_NAME, "canopy_model_set_time");
         }
 
         if (!identicalOnAllRanks())
@@ -598,16 +600,16 @@ void Foam::canopyStructure::readInitialState(const fileName& h5)
 
     if (!Pstream::master())
     {
+        // The master's motion exactly as it read it (its velocities already
+        // on the guide wire), no carried acceleration, as read_motion leaves
         canopy_model* m = model_.get();
         check
         (
-            canopy_model_set_positions(m, x.cdata(), n),
-            FUNCTION_NAME, "canopy_model_set_positions"
-        );
-        check
-        (
-            canopy_model_set_velocities(m, v.cdata(), n),
-            FUNCTION_NAME, "canopy_model_set_velocities"
+            canopy_model_set_state
+            (
+                m, time(), x.cdata(), v.cdata(), nullptr, 0, n
+            ),
+            FUNCTION_NAME, "canopy_model_set_state"
         );
     }
 
