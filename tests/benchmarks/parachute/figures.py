@@ -6,10 +6,10 @@ Prints BENCH lines (name value unit) and '# ' comment lines.
 
 mainjob: C_D0 of the case over the interval the 7 ft study reads (the
 steady interval of its first run in python/canopyfoam/validation.py),
-against the finest run of the study resolution7ft and its GCI (bin/
-canopy-validate converged resolution7ft, from the committed records).
+against the finest run of the study resolution7ftHeld and its GCI (bin/
+canopy-validate converged resolution7ftHeld, from the committed records).
 
-levels: for each run of resolution7ft found in build/validation (the
+levels: for each run of resolution7ftHeld found in build/validation (the
 study's own runs, 2 ranks), over the same interval: cells, wall seconds
 per time step (ClockTime increments of the solver log) and coupling
 iterations per step (canopy.dat).
@@ -26,7 +26,7 @@ sys.path.insert(0, os.path.join(TOP, "python"))
 from canopyfoam import report as rep          # noqa: E402
 from canopyfoam import validation as val      # noqa: E402
 
-STUDY = "resolution7ft"
+STUDY = "resolution7ftHeld"
 
 
 def interval():

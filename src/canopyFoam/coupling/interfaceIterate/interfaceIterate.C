@@ -89,7 +89,7 @@ bool Foam::interfaceIterate::update
     }
 
     // The next iterate, the held secondary data moved with it (IQN-ILS
-    // moves them with its columns, Aitken hands them the last solve's)
+    // moves them with its columns, Aitken with its factor)
     const bool converged = residual_ < tolerance_;
     acceleration.relax
     (
