@@ -354,9 +354,10 @@ bool Foam::canopyCoupling::endTimeStep()
     }
 
     // The next step starts from the committed structure's interface
-    // velocity (not the relaxed iterate), so that a restart, which knows
-    // only the structure's state, continues exactly
-    iterate_->normalFromStructure();
+    // velocities and the last solve's balance (not the relaxed iterate),
+    // so that a restart, which knows only that state, continues exactly
+    // and the frame does not matter
+    iterate_->endStep(parts_->addedMass());
     step_.frameOrigin = parts_->frame().origin();
     step_.lineDrag = lines ? lines->total() : vector::zero;
     parts_->output().writeSeries(step_);

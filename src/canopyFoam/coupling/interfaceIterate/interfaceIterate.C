@@ -38,6 +38,7 @@ Foam::interfaceIterate::interfaceIterate
     tolerance_(tolerance),
     Uref_(Uref),
     rms_(rms),
+    balanceRelaxed_(false),
     residual_(0),
     worst_(-1)
 {}
@@ -52,9 +53,14 @@ void Foam::interfaceIterate::fromStructure()
 }
 
 
-void Foam::interfaceIterate::normalFromStructure()
+void Foam::interfaceIterate::endStep(addedMassStabiliser& addedMass)
 {
-    normalVelocity_ = frame_.normalVelocities(structure_);
+    fromStructure();
+    if (balanceRelaxed_)
+    {
+        addedMass.setBalanceAcceleration(solvedBalance_);
+        balanceRelaxed_ = false;
+    }
 }
 
 
@@ -96,9 +102,11 @@ bool Foam::interfaceIterate::update
         normalVelocity_, target, heldBalance_, heldVelocity_,
         addedMass.balanceAcceleration(), velocity_
     );
+    balanceRelaxed_ = !converged;
     if (!converged)
     {
         velocity_ = heldVelocity_;
+        solvedBalance_ = addedMass.balanceAcceleration();
         addedMass.setBalanceAcceleration(heldBalance_);
     }
     return converged;
