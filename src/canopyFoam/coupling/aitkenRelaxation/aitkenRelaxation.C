@@ -101,9 +101,9 @@ void Foam::aitkenRelaxation::relax
     // The secondary data move with the same factor, so that the whole
     // state the map reads is relaxed: the stabiliser's balance handed on
     // unrelaxed is a loop of its own that the factor does not reach (it
-    // converges by no better than m_A/(m + m_A) per iteration), and the 7 ft
-    // canopy's inflation in a 5.6 D0 box stalled on it (docs/validation.md,
-    // "The stabiliser's balance under Aitken's relaxation")
+    // converges by no better than m_A/(m + m_A) per iteration;
+    // docs/validation.md, "The stabiliser's balance under Aitken's
+    // relaxation")
     x += omega_*r;
     s += omega_*(sTarget - s);
     previousResidual_ = r;
