@@ -3274,8 +3274,8 @@ def write_report():
                    "S/C (E. C. Maskell, ARC R&M 3400, 1963), gives 2.1 % "
                    "and 1.1 % with C_Dp 1.15 on the projected area. The "
                    "box's sides let the flow through, so they confine "
-                   "less than walls. Runs long enough to average the "
-                   "swing out are what can show the 1 % criterion.", ""]
+                   "less than walls. The same runs over 10-40 s: study "
+                   "domain7ftLong.", ""]
         if name == "domain7ftLong":
             md += ["The main job's set-up run on to 40 s in each box and "
                    "read over 10-40 s, about 7 times the 4 s window of "
@@ -3312,9 +3312,10 @@ def write_report():
                    "residual then alternates between 0.0055 and 0.011 "
                    "while the load on the cloth swings sideways by about "
                    "1 N between iterations, a two-cycle that a factor "
-                   "that small does not damp (the fluid's own iteration, "
-                   "two pressure correctors an outer iteration, carries "
-                   "state from one coupling iteration to the next). From "
+                   "that small does not damp. What carries it from one "
+                   "iteration to the next is not found yet (p is solved "
+                   "to relTol 0 in every outer iteration, and solving it "
+                   "so again changes nothing). From "
                    "the same state the step converges with Aitken's "
                    "factor from 0.3 (at most 4 iterations a step to 30.95 "
                    "s), with IQN-ILS (`initial 1; reuse 8; filter 1e-3`: "
