@@ -492,7 +492,11 @@ canopy_status canopy_model_set_speed_limit(canopy_model *model, double vmax);
  * where rho_i also holds node i's row sum of the hinge dashpots' damping
  * matrix over m_i (canopy_model_set_bending_damping; at the current shape;
  * not when they are implicit),
- * and *omega = max_i Lambda_i over free nodes (rad/s). */
+ * and *omega = max_i Lambda_i over free nodes (rad/s). With an integrator
+ * that solves the spring dashpots implicitly ("newmark", "hht") C_i is
+ * left out (rho_i holds only explicit hinge dashpots): the bound then
+ * sizes the sub-steps for the fastest oscillation, which damping only
+ * slows. */
 canopy_status canopy_model_frequency_bound(canopy_model *model,
                                            double *omega);
 /* Stable sub-step = max_omega_dt / frequency bound. */

@@ -14,13 +14,20 @@ canopy_status canopy_model_frequency_bound(canopy_model *model, double *omega)
     const canopy_nodes *n = &model->nodes;
     const canopy_springs *s = &model->springs;
     /* Per-node sums of stiffness and dashpot (x: K, y: C; z: the hinge
-     * dashpots' row sums of C, bending.c). */
+     * dashpots' row sums of C, bending.c). Dashpots that the integrator
+     * solves implicitly (Newmark, HHT) or the split update applies
+     * (implicit hinges) stay out: they bound no oscillation (a damped
+     * mode's frequency is below its undamped one) and threaten no
+     * stability there. */
+    const int damping_bounds = !model->integrator->implicit_damping;
     double *sum = canopy_vectors_at(&model->bound_sums, 0);
     for (int i = 0; i < 3 * n->count; ++i) sum[i] = 0.0;
     for (int k = 0; k < s->count; ++k) {
         const int i = s->ends[2 * k], j = s->ends[2 * k + 1];
         sum[3 * i] += s->k[k];     sum[3 * j] += s->k[k];
-        sum[3 * i + 1] += s->c[k]; sum[3 * j + 1] += s->c[k];
+        if (damping_bounds) {
+            sum[3 * i + 1] += s->c[k]; sum[3 * j + 1] += s->c[k];
+        }
     }
     if (!model->bending_implicit)
         canopy_hinge_damping_sums(model, n->x, sum + 2, 3);

@@ -29,6 +29,8 @@ struct canopy_integrator {
     canopy_state_alloc_fn alloc;
     canopy_step_fn step;
     canopy_state_free_fn free;
+    int implicit_damping; /* 1: solves the spring dashpots with the stiffness,
+                           * so they leave the frequency bound */
 };
 
 extern const canopy_integrator canopy_integrator_euler;

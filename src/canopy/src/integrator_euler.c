@@ -26,4 +26,4 @@ static canopy_status step(void *state, canopy_model *m, double dt)
 }
 
 const canopy_integrator canopy_integrator_euler = {
-    "euler", 1, 0, 0, alloc, step, canopy_vectors_state_free};
+    "euler", 1, 0, 0, alloc, step, canopy_vectors_state_free, 0};

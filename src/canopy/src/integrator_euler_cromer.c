@@ -27,4 +27,4 @@ static canopy_status step(void *state, canopy_model *m, double dt)
 }
 
 const canopy_integrator canopy_integrator_euler_cromer = {
-    "euler-cromer", 1, 0, 0, alloc, step, canopy_vectors_state_free};
+    "euler-cromer", 1, 0, 0, alloc, step, canopy_vectors_state_free, 0};

@@ -69,4 +69,4 @@ static canopy_status step(void *state, canopy_model *m, double dt)
 }
 
 const canopy_integrator canopy_integrator_kang = {
-    "kang", 1, 1, 0, alloc, step, canopy_vectors_state_free};
+    "kang", 1, 1, 0, alloc, step, canopy_vectors_state_free, 0};

@@ -368,6 +368,6 @@ static canopy_status hht_alpha_step(void *state, canopy_model *m, double dt)
 }
 
 const canopy_integrator canopy_integrator_newmark = {
-    "newmark", 2, 1, 0, hht_alloc, newmark_step, canopy_vectors_state_free};
+    "newmark", 2, 1, 0, hht_alloc, newmark_step, canopy_vectors_state_free, 1};
 const canopy_integrator canopy_integrator_hht = {
-    "hht", 2, 1, 1, hht_alloc, hht_alpha_step, canopy_vectors_state_free};
+    "hht", 2, 1, 1, hht_alloc, hht_alpha_step, canopy_vectors_state_free, 1};

@@ -59,4 +59,4 @@ static canopy_status step(void *state, canopy_model *m, double dt)
 }
 
 const canopy_integrator canopy_integrator_rk4 = {
-    "rk4", 4, 0, 0, alloc, step, canopy_vectors_state_free};
+    "rk4", 4, 0, 0, alloc, step, canopy_vectors_state_free, 0};

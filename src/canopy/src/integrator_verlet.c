@@ -37,4 +37,4 @@ static canopy_status step(void *state, canopy_model *m, double dt)
 }
 
 const canopy_integrator canopy_integrator_verlet = {
-    "verlet", 2, 0, 0, alloc, step, canopy_vectors_state_free};
+    "verlet", 2, 0, 0, alloc, step, canopy_vectors_state_free, 0};

@@ -214,8 +214,9 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
     }
 
     // The secondary part of the iterate this solve reads (besides the
-    // normal velocity): the stabiliser's balance and the no-slip velocity
-    iterate_->hold(parts_->addedMass());
+    // normal velocity): the stabiliser's balance, the no-slip velocity and
+    // the markers' geometry
+    iterate_->hold(parts_->addedMass(), parts_->forcing().markers());
 
     // The structure's time step from its start under these loads
     string message;
@@ -247,15 +248,29 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
     }
     ++structureSolves_;
 
-    // The residual, the convergence decision and the next iterate
+    // The markers on the structure's result, then the residual, the
+    // convergence decision and the next iterate (unconverged, the markers
+    // move to its geometry)
+    {
+        sectionTimer timer(ibSeconds_);
+        parts_->forcing().place
+        (
+            structure_.model(), parts_->frame().originAt(structure_.time())
+        );
+    }
     converged_ =
         iterate_->update
         (
-            strong_, parts_->acceleration(), parts_->addedMass()
+            strong_, parts_->acceleration(), parts_->addedMass(),
+            parts_->forcing()
         );
     step_.residual = iterate_->residual();
 
-    const string problem(placeMarkers());
+    string problem;
+    {
+        sectionTimer timer(ibSeconds_);
+        problem = parts_->forcing().updateStencils();
+    }
     if (!problem.empty())
     {
         failure_ =
@@ -309,19 +324,26 @@ bool Foam::canopyCoupling::endTimeStep()
         }
     }
 
-    // The frame moves on with the step; the markers with it
+    // The frame moves on with the step; the markers with it, and back on
+    // the structure when an unconverged step left them at the relaxed
+    // iterate
     const bool frameMoved =
         !failed()
      && parts_->frame().moveOn(mesh_.time().deltaTValue(), structure_.time());
-    if (frameMoved)
+    const bool markersRelaxed = !failed() && strong_ && !converged_;
+    if (frameMoved || markersRelaxed)
     {
         const string problem(placeMarkers());
         if (!problem.empty())
         {
-            parts_->frame().undoMove();
+            if (frameMoved)
+            {
+                parts_->frame().undoMove();
+            }
             failure_ =
                 "at t = " + canopyCompat::timeName(mesh_.time())
-              + " (frame moved), " + problem;
+              + (frameMoved ? " (frame moved), " : " (markers placed), ")
+              + problem;
         }
     }
 
@@ -347,7 +369,7 @@ bool Foam::canopyCoupling::endTimeStep()
         sectionTimer timer(ibSeconds_);
         lines->place(structure_.model(), parts_->frame().origin());
     }
-    if (frameMoved || lines)
+    if (frameMoved || markersRelaxed || lines)
     {
         // The force from the markers' and the lines' new places
         parts_->force().spread();

@@ -194,6 +194,23 @@ void Foam::canopyMarkers::update
 }
 
 
+void Foam::canopyMarkers::moveTo
+(
+    const pointField& points,
+    const vectorField& normals
+)
+{
+    if (points.size() != size() || normals.size() != size())
+    {
+        FatalErrorInFunction
+            << points.size() << " positions and " << normals.size()
+            << " normals for " << size() << " markers" << exit(FatalError);
+    }
+    points_ = points;
+    normals_ = normals/max(mag(normals), VSMALL);
+}
+
+
 Foam::tmp<Foam::scalarField> Foam::canopyMarkers::triangleAverage
 (
     const scalarField& markerValues

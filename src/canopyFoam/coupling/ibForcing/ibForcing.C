@@ -179,6 +179,16 @@ void Foam::ibForcing::place(const canopy_model* model, const vector& origin)
 }
 
 
+void Foam::ibForcing::moveMarkers
+(
+    const pointField& points,
+    const vectorField& normals
+)
+{
+    markers_->moveTo(points, normals);
+}
+
+
 Foam::string Foam::ibForcing::updateStencils()
 {
     const canopyMarkers& mk = markers_();

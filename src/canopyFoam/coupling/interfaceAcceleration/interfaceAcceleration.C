@@ -19,16 +19,18 @@ namespace Foam
 namespace
 {
 
-// The components of a and b one after another
-Foam::scalarField packVectors
-(
-    const Foam::vectorField& a,
-    const Foam::vectorField& b
-)
+// The components of the fields one after another, in list order
+template<class FieldPtr>
+Foam::scalarField packVectors(const Foam::UList<FieldPtr>& fields)
 {
-    Foam::scalarField s(3*(a.size() + b.size()));
+    Foam::label n = 0;
+    for (const FieldPtr f : fields)
+    {
+        n += 3*f->size();
+    }
+    Foam::scalarField s(n);
     Foam::label i = 0;
-    for (const Foam::vectorField* f : {&a, &b})
+    for (const FieldPtr f : fields)
     {
         for (const Foam::vector& v : *f)
         {
@@ -42,16 +44,15 @@ Foam::scalarField packVectors
 }
 
 
-// The inverse of packVectors (a and b keep their sizes)
+// The inverse of packVectors (the fields keep their sizes)
 void unpackVectors
 (
     const Foam::scalarField& s,
-    Foam::vectorField& a,
-    Foam::vectorField& b
+    const Foam::UList<Foam::vectorField*>& fields
 )
 {
     Foam::label i = 0;
-    for (Foam::vectorField* f : {&a, &b})
+    for (Foam::vectorField* f : fields)
     {
         for (Foam::vector& v : *f)
         {
@@ -72,15 +73,13 @@ void Foam::interfaceAcceleration::relax
 (
     scalarField& x,
     const scalarField& target,
-    vectorField& a,
-    vectorField& b,
-    const vectorField& aTarget,
-    const vectorField& bTarget
+    const UList<vectorField*>& held,
+    const UList<const vectorField*>& targets
 )
 {
-    scalarField s(packVectors(a, b));
-    relax(x, target, s, packVectors(aTarget, bTarget));
-    unpackVectors(s, a, b);
+    scalarField s(packVectors(held));
+    relax(x, target, s, packVectors(targets));
+    unpackVectors(s, held);
 }
 
 

@@ -64,10 +64,16 @@ void Foam::interfaceIterate::endStep(addedMassStabiliser& addedMass)
 }
 
 
-void Foam::interfaceIterate::hold(const addedMassStabiliser& addedMass)
+void Foam::interfaceIterate::hold
+(
+    const addedMassStabiliser& addedMass,
+    const canopyMarkers& markers
+)
 {
     heldBalance_ = addedMass.balanceAcceleration();
     heldVelocity_ = velocity_;
+    heldPoints_ = markers.points();
+    heldNormals_ = markers.normals();
 }
 
 
@@ -75,7 +81,8 @@ bool Foam::interfaceIterate::update
 (
     const bool strong,
     interfaceAcceleration& acceleration,
-    addedMassStabiliser& addedMass
+    addedMassStabiliser& addedMass,
+    ibForcing& forcing
 )
 {
     // This iteration's change of the interface velocity: its norm is the
@@ -95,12 +102,25 @@ bool Foam::interfaceIterate::update
     }
 
     // The next iterate, the held secondary data moved with it (IQN-ILS
-    // moves them with its columns, Aitken with its factor)
+    // moves them with its columns, Aitken with its factor); the markers'
+    // positions in the mesh's frame, as the velocities: the first
+    // iteration's held positions are the step's start carried with the
+    // frame, so that the iterates do not depend on the frame's velocity
+    // (tests/openfoam/frameGalilean)
     const bool converged = residual_ < tolerance_;
+    const canopyMarkers& markers = forcing.markers();
+    const vectorField& solvedPoints = markers.points();
+    const vectorField& solvedNormals = markers.normals();
     acceleration.relax
     (
-        normalVelocity_, target, heldBalance_, heldVelocity_,
-        addedMass.balanceAcceleration(), velocity_
+        normalVelocity_, target,
+        List<vectorField*>
+        ({&heldBalance_, &heldVelocity_, &heldPoints_, &heldNormals_}),
+        List<const vectorField*>
+        ({
+            &addedMass.balanceAcceleration(), &velocity_,
+            &solvedPoints, &solvedNormals
+        })
     );
     balanceRelaxed_ = !converged;
     if (!converged)
@@ -108,6 +128,7 @@ bool Foam::interfaceIterate::update
         velocity_ = heldVelocity_;
         solvedBalance_ = addedMass.balanceAcceleration();
         addedMass.setBalanceAcceleration(heldBalance_);
+        forcing.moveMarkers(heldPoints_, heldNormals_);
     }
     return converged;
 }
