@@ -114,3 +114,48 @@ CANOPY_TEST(failed_step_restores_state)
     ASSERT_TRUE(canopy_model_time(m) == 0.0);
     canopy_model_destroy(&m);
 }
+
+/* Restore returns the loads set on the model too (pressure jump and nodal
+ * forces), so that a failed coupling step's state, written after restore,
+ * is the one the step started from: advancing from it without setting the
+ * loads again repeats the step as first taken. */
+CANOPY_TEST(restore_returns_loads)
+{
+    canopy_model *m = NULL;
+    ASSERT_OK(m, make_model(&m, "hht"));
+    const int n = canopy_model_node_count(m), nt = canopy_model_triangle_count(m);
+    const double dt = 2e-3;
+    double f[3 * N * N], other[3 * N * N];
+    for (int i = 0; i < 3 * n; ++i) {
+        f[i] = 0.01 * ((i % 7) - 3);
+        other[i] = -5.0 * f[i] + 0.3;
+    }
+    ASSERT_OK(m, canopy_model_set_nodal_forces(m, f, n));
+    for (int s = 0; s < 5; ++s) ASSERT_OK(m, canopy_model_advance(m, dt, NULL));
+
+    double dp0[2 * (N - 1) * (N - 1)], dp_trial[2 * (N - 1) * (N - 1)],
+        dp1[2 * (N - 1) * (N - 1)];
+    ASSERT_OK(m, canopy_model_get_pressure_jump(m, dp0, nt));
+    ASSERT_OK(m, canopy_model_checkpoint(m));
+    /* The step as first taken, with the loads it started with */
+    double xa[3 * N * N], xb[3 * N * N];
+    ASSERT_OK(m, canopy_model_advance(m, dt, NULL));
+    ASSERT_OK(m, canopy_model_get_positions(m, xa, n));
+    ASSERT_OK(m, canopy_model_restore(m));
+    /* A coupling iteration with other loads, then restore */
+    for (int t = 0; t < nt; ++t) dp_trial[t] = 40.0 - 2.0 * dp0[t];
+    ASSERT_OK(m, canopy_model_set_pressure_jump(m, dp_trial, nt));
+    ASSERT_OK(m, canopy_model_set_nodal_forces(m, other, n));
+    ASSERT_OK(m, canopy_model_advance(m, dt, NULL));
+    ASSERT_OK(m, canopy_model_restore(m));
+    ASSERT_OK(m, canopy_model_get_pressure_jump(m, dp1, nt));
+    ASSERT_TRUE(memcmp(dp0, dp1, sizeof(double) * (size_t)nt) == 0);
+    /* The same step again without setting the loads: the nodal forces
+     * and the pressure jump are the checkpoint's, so it repeats exactly */
+    ASSERT_OK(m, canopy_model_advance(m, dt, NULL));
+    ASSERT_OK(m, canopy_model_get_positions(m, xb, n));
+    printf("restore returns the loads: the step repeated to %.2e "
+           "(relative)\n", rel_diff(xa, xb, 3 * n));
+    ASSERT_TRUE(memcmp(xa, xb, sizeof(double) * 3 * (size_t)n) == 0);
+    canopy_model_destroy(&m);
+}

@@ -573,9 +573,12 @@ canopy_status canopy_model_get_normal_velocities(const canopy_model *model,
 /* The seepage velocity for a given dp under the model's porosity. */
 double canopy_model_seepage_velocity(const canopy_model *model, double dp);
 
-/* Strong coupling: checkpoint saves time, positions and velocities; restore
- * returns to them (any number of times); commit drops the checkpoint.
- * Restore without a checkpoint fails with CANOPY_ERR_STATE. */
+/* Strong coupling: checkpoint saves time, positions, velocities, the
+ * integrator's carried acceleration and the loads set on the model (the
+ * pressure jump and the nodal forces); restore returns to all of them (any
+ * number of times), so that a state written after a restore is the
+ * checkpoint's, loads included; commit drops the checkpoint. Restore
+ * without a checkpoint fails with CANOPY_ERR_STATE. */
 canopy_status canopy_model_checkpoint(canopy_model *model);
 canopy_status canopy_model_restore(canopy_model *model);
 canopy_status canopy_model_commit(canopy_model *model);

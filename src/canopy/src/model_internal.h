@@ -88,8 +88,11 @@ typedef struct canopy_hinges {
 typedef struct canopy_state_copy {
     int valid;
     int count;          /* nodes the arrays hold */
+    int triangles;      /* triangles dp holds */
     double t;
     double *x, *v, *acc; /* 3*node count */
+    double *force_ext;  /* 3*node count: the nodal loads set on the model */
+    double *dp;         /* triangle count: the pressure jump set on it */
     int acc_valid;
 } canopy_state_copy;
 

@@ -197,17 +197,24 @@ void Foam::canopyMarkers::update
 void Foam::canopyMarkers::moveTo
 (
     const pointField& points,
-    const vectorField& normals
+    const vectorField& normals,
+    const scalarField& areas
 )
 {
-    if (points.size() != size() || normals.size() != size())
+    if
+    (
+        points.size() != size() || normals.size() != size()
+     || areas.size() != size()
+    )
     {
         FatalErrorInFunction
-            << points.size() << " positions and " << normals.size()
-            << " normals for " << size() << " markers" << exit(FatalError);
+            << points.size() << " positions, " << normals.size()
+            << " normals and " << areas.size() << " areas for " << size()
+            << " markers" << exit(FatalError);
     }
     points_ = points;
     normals_ = normals/max(mag(normals), VSMALL);
+    areas_ = areas;
 }
 
 

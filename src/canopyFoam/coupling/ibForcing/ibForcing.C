@@ -182,10 +182,11 @@ void Foam::ibForcing::place(const canopy_model* model, const vector& origin)
 void Foam::ibForcing::moveMarkers
 (
     const pointField& points,
-    const vectorField& normals
+    const vectorField& normals,
+    const scalarField& areas
 )
 {
-    markers_->moveTo(points, normals);
+    markers_->moveTo(points, normals, areas);
 }
 
 

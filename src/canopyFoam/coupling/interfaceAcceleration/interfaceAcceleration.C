@@ -19,18 +19,27 @@ namespace Foam
 namespace
 {
 
-// The components of the fields one after another, in list order
-template<class FieldPtr>
-Foam::scalarField packVectors(const Foam::UList<FieldPtr>& fields)
+// The vector fields' components one after another, in list order, then
+// the scalar fields' values
+template<class VectorPtr, class ScalarPtr>
+Foam::scalarField pack
+(
+    const Foam::UList<VectorPtr>& vectors,
+    const Foam::UList<ScalarPtr>& scalars
+)
 {
     Foam::label n = 0;
-    for (const FieldPtr f : fields)
+    for (const VectorPtr f : vectors)
     {
         n += 3*f->size();
     }
+    for (const ScalarPtr f : scalars)
+    {
+        n += f->size();
+    }
     Foam::scalarField s(n);
     Foam::label i = 0;
-    for (const FieldPtr f : fields)
+    for (const VectorPtr f : vectors)
     {
         for (const Foam::vector& v : *f)
         {
@@ -40,19 +49,27 @@ Foam::scalarField packVectors(const Foam::UList<FieldPtr>& fields)
             }
         }
     }
+    for (const ScalarPtr f : scalars)
+    {
+        for (const Foam::scalar v : *f)
+        {
+            s[i++] = v;
+        }
+    }
     return s;
 }
 
 
-// The inverse of packVectors (the fields keep their sizes)
-void unpackVectors
+// The inverse of pack (the fields keep their sizes)
+void unpack
 (
     const Foam::scalarField& s,
-    const Foam::UList<Foam::vectorField*>& fields
+    const Foam::UList<Foam::vectorField*>& vectors,
+    const Foam::UList<Foam::scalarField*>& scalars
 )
 {
     Foam::label i = 0;
-    for (Foam::vectorField* f : fields)
+    for (Foam::vectorField* f : vectors)
     {
         for (Foam::vector& v : *f)
         {
@@ -60,6 +77,13 @@ void unpackVectors
             {
                 v[d] = s[i++];
             }
+        }
+    }
+    for (Foam::scalarField* f : scalars)
+    {
+        for (Foam::scalar& v : *f)
+        {
+            v = s[i++];
         }
     }
 }
@@ -77,9 +101,27 @@ void Foam::interfaceAcceleration::relax
     const UList<const vectorField*>& targets
 )
 {
-    scalarField s(packVectors(held));
-    relax(x, target, s, packVectors(targets));
-    unpackVectors(s, held);
+    relax
+    (
+        x, target, held, targets, UList<scalarField*>(),
+        UList<const scalarField*>()
+    );
+}
+
+
+void Foam::interfaceAcceleration::relax
+(
+    scalarField& x,
+    const scalarField& target,
+    const UList<vectorField*>& held,
+    const UList<const vectorField*>& targets,
+    const UList<scalarField*>& heldScalars,
+    const UList<const scalarField*>& scalarTargets
+)
+{
+    scalarField s(pack(held, heldScalars));
+    relax(x, target, s, pack(targets, scalarTargets));
+    unpack(s, held, heldScalars);
 }
 
 

@@ -74,6 +74,7 @@ void Foam::interfaceIterate::hold
     heldVelocity_ = velocity_;
     heldPoints_ = markers.points();
     heldNormals_ = markers.normals();
+    heldAreas_ = markers.areas();
 }
 
 
@@ -111,6 +112,7 @@ bool Foam::interfaceIterate::update
     const canopyMarkers& markers = forcing.markers();
     const vectorField& solvedPoints = markers.points();
     const vectorField& solvedNormals = markers.normals();
+    const scalarField& solvedAreas = markers.areas();
     acceleration.relax
     (
         normalVelocity_, target,
@@ -120,7 +122,9 @@ bool Foam::interfaceIterate::update
         ({
             &addedMass.balanceAcceleration(), &velocity_,
             &solvedPoints, &solvedNormals
-        })
+        }),
+        List<scalarField*>({&heldAreas_}),
+        List<const scalarField*>({&solvedAreas})
     );
     balanceRelaxed_ = !converged;
     if (!converged)
@@ -128,7 +132,7 @@ bool Foam::interfaceIterate::update
         velocity_ = heldVelocity_;
         solvedBalance_ = addedMass.balanceAcceleration();
         addedMass.setBalanceAcceleration(heldBalance_);
-        forcing.moveMarkers(heldPoints_, heldNormals_);
+        forcing.moveMarkers(heldPoints_, heldNormals_, heldAreas_);
     }
     return converged;
 }
