@@ -2186,15 +2186,24 @@ def two_level_lines(results, what, ratio=2.0):
     return lines + [""]
 
 
+def complete_against_first(results):
+    """The (run, analysis) pairs of the complete runs, when the first run
+    and at least one other are complete; else None."""
+    done = [(run, rec["analysis"]) for run, rec in results
+            if rec is not None and rec["complete"]
+            and rec["analysis"] is not None]
+    if len(done) < 2 or done[0][0] is not results[0][0]:
+        return None
+    return done
+
+
 def against_gci_lines(results, what, study="resolution7ft"):
     """The change of each run's descent speed, C_D0 and Dp/D0 from the
     first run's, against the resolution study's GCI of the same quantity
     (an effect inside the GCI is not distinguishable from the
     discretisation's uncertainty), as markdown."""
-    done = [(run, rec["analysis"]) for run, rec in results
-            if rec is not None and rec["complete"]
-            and rec["analysis"] is not None]
-    if len(done) < 2 or done[0][0] is not results[0][0]:
+    done = complete_against_first(results)
+    if done is None:
         return ["%s: needs %s and another run complete." % (
             what, results[0][0].ident), ""]
     try:
@@ -2289,10 +2298,8 @@ def window_change_lines(results, what):
     h add as sqrt(h1^2 + h2^2); C_D0 goes as 1/V^2, so its relative
     half-width is 2 h / V. A change inside the combined interval is not
     told apart from the window's own scatter."""
-    done = [(run, rec["analysis"]) for run, rec in results
-            if rec is not None and rec["complete"]
-            and rec["analysis"] is not None]
-    if len(done) < 2 or done[0][0] is not results[0][0]:
+    done = complete_against_first(results)
+    if done is None:
         return ["%s: needs %s and another run complete." % (
             what, results[0][0].ident), ""]
     base_run, base = done[0]
