@@ -98,22 +98,6 @@ void Foam::interfaceAcceleration::relax
     scalarField& x,
     const scalarField& target,
     const UList<vectorField*>& held,
-    const UList<const vectorField*>& targets
-)
-{
-    relax
-    (
-        x, target, held, targets, UList<scalarField*>(),
-        UList<const scalarField*>()
-    );
-}
-
-
-void Foam::interfaceAcceleration::relax
-(
-    scalarField& x,
-    const scalarField& target,
-    const UList<vectorField*>& held,
     const UList<const vectorField*>& targets,
     const UList<scalarField*>& heldScalars,
     const UList<const scalarField*>& scalarTargets
