@@ -212,6 +212,9 @@ canopy_model* buildReference
         s.diameter = canopyCompat::readValue<scalar>(c, "diameter");
         s.vent_diameter = c.lookupOrDefault<scalar>("ventDiameter", 0);
         s.height = type == "parabolic" ? canopyCompat::readValue<scalar>(c, "height") : 0;
+        const dictionary skirt = c.subOrEmptyDict("extendedSkirt");
+        s.skirt_length = skirt.lookupOrDefault<scalar>("length", 0);
+        s.skirt_diameter = skirt.lookupOrDefault<scalar>("hemDiameter", 0);
         s.edge_length = edge;
         for (direction d = 0; d < 3; ++d) s.center[d] = centre[d];
         s.n_attachments = c.lookupOrDefault<label>
@@ -232,8 +235,11 @@ canopy_model* buildReference
         ok(m, canopy_build_circular(m, &s, attach.data()), "canopy_build_circular");
         if (type == "flatCircular")
         {
+            // the flat disc and the extended skirt's frustum
             e.area = constant::mathematical::pi/4
-                *(sqr(s.diameter) - sqr(s.vent_diameter));
+                *(sqr(s.diameter) - sqr(s.vent_diameter))
+              + constant::mathematical::pi/2
+                *(s.diameter + s.skirt_diameter)*s.skirt_length;
             e.areaTolerance = 0.01;
         }
     }

@@ -220,19 +220,30 @@ canopy_material canopy_material_fabric_default(void);
 canopy_material canopy_material_line_default(void);
 
 /* Circular canopy as a surface of revolution: flat (height 0) or parabolic,
- * z = apex_z - height (r/R)^2 (seed 000 eq. 5.4), with an optional vent. The
- * axis is the vertical through `center`, which is the apex, or the centre of
- * the vent opening (in the vent's plane) when there is a vent; the skirt
- * lies `height (1 - (r_vent/R)^2)` below it. Rings of nodes start at angle 0
+ * z = apex_z - height (r/R)^2 (seed 000 eq. 5.4), with an optional vent and
+ * an optional extended skirt. The axis is the vertical through `center`,
+ * which is the apex, or the centre of the vent opening (in the vent's plane)
+ * when there is a vent; the rim r = R lies `height (1 - (r_vent/R)^2)` below
+ * it. An extended skirt (skirt_length > 0) is a band of cloth beyond the rim,
+ * a conical frustum of slant `skirt_length` from the rim down and inwards to
+ * the hem of diameter `skirt_diameter` (R - skirt_diameter/2 <= skirt_length):
+ * the hem, where the lines attach, is narrower than the rim, as in extended-
+ * skirt canopies (Knacke, Parachute Recovery Systems Design Manual, 1991,
+ * Table 5-1). Rings of nodes start at angle 0
  * and hold a multiple of n_attachments nodes, so the attachments (and
  * gores) sit on nodes; rings too small for that keep a symmetric count:
  * near the apex (radial tapes then end at the apex node) and near a vent
  * without radial tapes (its edge ring has at least 6 nodes). With radial
  * tapes the gore rings reach the vent, narrowing with the gores. */
 typedef struct canopy_circular_spec {
-    double diameter;       /* horizontal skirt diameter (flat: constructed) */
+    double diameter;       /* horizontal rim diameter 2R (without an extended
+                              skirt the skirt; flat: constructed) */
     double vent_diameter;  /* 0: no vent */
-    double height;         /* apex above skirt; 0: flat */
+    double height;         /* apex above the rim; 0: flat */
+    double skirt_length;   /* extended skirt's slant length; 0: none */
+    double skirt_diameter; /* extended skirt's hem diameter, in
+                              [diameter - 2 skirt_length, diameter]; used only
+                              when skirt_length > 0 */
     double edge_length;    /* target triangle edge length */
     double center[3];
     int n_attachments;     /* suspension line attachment points on the skirt */
@@ -241,7 +252,7 @@ typedef struct canopy_circular_spec {
     canopy_material tape;
 } canopy_circular_spec;
 canopy_circular_spec canopy_circular_spec_default(void);
-/* attach_out (n_attachments ints, may be NULL): skirt nodes at angles
+/* attach_out (n_attachments ints, may be NULL): skirt (hem) nodes at angles
  * 2 pi k / n_attachments, k = 0..n-1. */
 canopy_status canopy_build_circular(canopy_model *model,
                                     const canopy_circular_spec *spec,

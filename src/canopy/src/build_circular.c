@@ -1,4 +1,4 @@
-/* build_circular.c — canopy_build_circular: flat or parabolic circular canopy (optional vent, radial tapes) as rings of nodes zipped into near-equilateral triangles. */
+/* build_circular.c — canopy_build_circular: flat or parabolic circular canopy (optional vent, extended skirt, radial tapes) as rings of nodes zipped into near-equilateral triangles. */
 #include "build_internal.h"
 
 #include <math.h>
@@ -10,14 +10,19 @@
 static const double TWO_PI = 6.283185307179586476925286766559;
 
 /* Geometry of the surface of revolution, seed 000 eq. 5.4 written with the
- * apex on the axis: z(r) = z_apex - a r^2, a = height / R^2, R the skirt
- * radius. `diameter` is the horizontal skirt diameter 2R (for a flat canopy
+ * apex on the axis: z(r) = z_apex - a r^2, a = height / R^2, R the rim
+ * radius. `diameter` is the horizontal rim diameter 2R (for a flat canopy
  * its constructed diameter); the vent is the horizontal circle r = r_v and
  * `center` is the centre of the vent opening (the apex without vent), so
- * z_apex = center_z + a r_v^2. */
+ * z_apex = center_z + a r_v^2. An extended skirt continues the meridian
+ * beyond the rim (arc length s_rim) in a straight line of length L, each
+ * unit of arc moving the radius by dr < 0 and the height by dz < 0, to the
+ * hem r = R + L dr. */
 typedef struct surface {
     double R, rv, a;
     double cx, cy, z_apex;
+    double s_rim;       /* meridian arc length from the axis to the rim */
+    double L, dr, dz;   /* extended skirt: slant length (0: none), direction */
     int gores_to_vent;  /* a vent with radial tapes: gore rings reach it */
 } surface;
 
@@ -31,10 +36,12 @@ static double arc_length(const surface *sf, double r)
     return 0.5 * (r * sqrt(1.0 + b * b * r * r) + asinh(b * r) / b);
 }
 
-/* Radius at arc length s in [0, s(R)]: Newton from r = R. s(r) is increasing
- * and convex, so the iterates decrease monotonically onto the root. */
+/* Radius at arc length s in [0, s_rim + L]: on the extended skirt the
+ * straight line; inside the rim Newton from r = R (s(r) is increasing and
+ * convex, so the iterates decrease monotonically onto the root). */
 static double radius_at(const surface *sf, double s)
 {
+    if (s > sf->s_rim) return sf->R + (s - sf->s_rim) * sf->dr;
     if (sf->a == 0.0) return s;
     const double b = 2.0 * sf->a;
     double r = sf->R;
@@ -45,6 +52,14 @@ static double radius_at(const surface *sf, double s)
         if (fabs(step) <= 1e-15 * sf->R) break;
     }
     return r;
+}
+
+/* Height at arc length s whose radius is r. */
+static double height_at(const surface *sf, double s, double r)
+{
+    const double z_rim = sf->z_apex - sf->a * sf->R * sf->R;
+    if (s > sf->s_rim) return z_rim + (s - sf->s_rim) * sf->dz;
+    return sf->z_apex - sf->a * r * r;
 }
 
 /* One ring of nodes. A gore ring has `per_gore` nodes in each of the
@@ -107,6 +122,28 @@ static canopy_status validate(canopy_model *model,
         return canopy_fail(model, CANOPY_ERR_ARGUMENT,
                            WHO ": spec.height %g must be finite and >= 0",
                            spec->height);
+    if (!isfinite(spec->skirt_length) || spec->skirt_length < 0.0)
+        return canopy_fail(model, CANOPY_ERR_ARGUMENT,
+                           WHO ": spec.skirt_length %g must be finite and "
+                           ">= 0", spec->skirt_length);
+    if (spec->skirt_length > 0.0) {
+        /* The band must turn down from the rim (dz < 0, or it would lie in
+         * the rim's plane) and inwards (dr < 0, which orients it). */
+        if (!isfinite(spec->skirt_diameter) || !(spec->skirt_diameter > 0.0) ||
+            !(spec->skirt_diameter < spec->diameter))
+            return canopy_fail(model, CANOPY_ERR_ARGUMENT,
+                               WHO ": spec.skirt_diameter %g must be in (0, "
+                               "spec.diameter %g) for an extended skirt",
+                               spec->skirt_diameter, spec->diameter);
+        if (!(0.5 * (spec->diameter - spec->skirt_diameter) <
+              spec->skirt_length))
+            return canopy_fail(model, CANOPY_ERR_ARGUMENT,
+                               WHO ": spec.skirt_length %g must exceed the "
+                               "radial step from the rim to the hem, (spec."
+                               "diameter %g - spec.skirt_diameter %g) / 2",
+                               spec->skirt_length, spec->diameter,
+                               spec->skirt_diameter);
+    }
     if ((st = canopy_build_check_positive(model, WHO, "edge_length",
                                           spec->edge_length)))
         return st;
@@ -429,16 +466,17 @@ static int choose_ring(planner *pl, ring *rg, int i, int vent, double e_loc)
 
 /* Plan the rings (arc positions, radii, heights, counts) without touching
  * the model. rings[0] is the vent ring, or the apex node (r = 0, count 1)
- * without a vent; rings[nr] is the skirt. */
+ * without a vent; rings[nr] is the skirt (the hem); with an extended skirt
+ * rings[*n_rim_out] is the rim, and the band's rings are evenly spaced. */
 static canopy_status plan_rings(canopy_model *model,
                                 const canopy_circular_spec *spec,
                                 const surface *sf, ring **rings_out,
-                                int *nr_out)
+                                int *nr_out, int *n_rim_out)
 {
     const double e = spec->edge_length;
     const int n_att = spec->n_attachments;
     const int vent = sf->rv > 0.0;
-    const double s0 = arc_length(sf, sf->rv), s1 = arc_length(sf, sf->R);
+    const double s0 = arc_length(sf, sf->rv), s1 = sf->s_rim + sf->L;
     /* Size check before any allocation or marching: nodes ~ area /
      * (sqrt(3)/2 e^2), plus per ring up to two gores' worth, plus the rings
      * a vent's narrow gores add (their spacing grows geometrically). */
@@ -461,20 +499,23 @@ static canopy_status plan_rings(canopy_model *model,
                            "needs ~%.3g nodes, more than the builder's limit "
                            "%.3g", e, spec->diameter, spec->vent_diameter,
                            n_att, nodes_est, CANOPY_BUILD_MAX_ITEMS);
-    const int nr = ring_intervals(sf, s0, s1, e, n_att);
+    const int n_rim = ring_intervals(sf, s0, sf->s_rim, e, n_att);
+    const int nr = n_rim + (sf->L > 0.0 ? canopy_build_spacings(sf->L, h) : 0);
     ring *rg = calloc((size_t)nr + 1, sizeof *rg);
     if (rg == NULL)
         return canopy_fail(model, CANOPY_ERR_MEMORY,
                            WHO ": cannot allocate %d rings", nr + 1);
-    place_rings(sf, s0, s1, e, n_att, rg, nr);
+    place_rings(sf, s0, sf->s_rim, e, n_att, rg, n_rim);
+    for (int i = n_rim + 1; i <= nr; ++i)
+        rg[i].s = i == nr ? s1 : sf->s_rim + sf->L * (i - n_rim) / (nr - n_rim);
     for (int i = 0; i <= nr; ++i) {
-        const double r = i == nr ? sf->R : (i == 0 ? sf->rv
-                                                   : radius_at(sf, rg[i].s));
+        const double r = i == n_rim ? sf->R
+                         : (i == 0 ? sf->rv : radius_at(sf, rg[i].s));
         rg[i].r = r;
-        rg[i].z = sf->z_apex - sf->a * r * r;
+        rg[i].z = height_at(sf, rg[i].s, r);
     }
-    /* The skirt: p = round(2 pi R / (e n)) >= 1 even segments per gore. */
-    const double pq = floor(TWO_PI * sf->R / (e * n_att) + 0.5);
+    /* The skirt: p = round(2 pi r_hem / (e n)) >= 1 even segments per gore. */
+    const double pq = floor(TWO_PI * rg[nr].r / (e * n_att) + 0.5);
     rg[nr].per_gore = pq < 1.0 ? 1 : (int)pq;
     rg[nr].count = rg[nr].per_gore * n_att;
     planner pl = {sf, n_att, NULL, NULL, NULL, 0};
@@ -497,6 +538,7 @@ static canopy_status plan_rings(canopy_model *model,
     }
     *rings_out = rg;
     *nr_out = nr;
+    *n_rim_out = n_rim;
     return CANOPY_OK;
 }
 
@@ -568,7 +610,8 @@ static canopy_status add_tapes(canopy_model *model,
 
 static canopy_status build(canopy_model *model,
                            const canopy_circular_spec *spec, ring *rg, int nr,
-                           const surface *sf, int *chain_a, int *chain_b)
+                           int n_rim, const surface *sf, int *chain_a,
+                           int *chain_b)
 {
     const int n_att = spec->n_attachments;
     const int vent = sf->rv > 0.0;
@@ -594,8 +637,12 @@ static canopy_status build(canopy_model *model,
             st = canopy_fabric_triangle(&fb, rg[0].first, ring_node(&rg[1], j),
                                         ring_node(&rg[1], j + 1));
     }
-    for (int i = vent ? 0 : 1; i < nr && st == CANOPY_OK; ++i)
+    for (int i = vent ? 0 : 1; i < nr && st == CANOPY_OK; ++i) {
+        /* The extended skirt folds the surface down and inwards at the rim:
+         * its outer side (the dome's, carried on) faces down there. */
+        if (i == n_rim) fb.up[2] = -1.0;
         st = zip_rings(&fb, &rg[i], &rg[i + 1], n_att, chain_a, chain_b);
+    }
     canopy_fabric_end(&fb);
     if (st == CANOPY_OK && spec->radial_tapes)
         st = add_tapes(model, spec, rg, nr, vent);
@@ -618,10 +665,18 @@ canopy_status canopy_build_circular(canopy_model *model,
     sf.cy = spec->center[1];
     sf.z_apex = spec->center[2] + sf.a * sf.rv * sf.rv;
     sf.gores_to_vent = sf.rv > 0.0 && spec->radial_tapes;
+    sf.s_rim = arc_length(&sf, sf.R);
+    sf.L = spec->skirt_length;
+    sf.dr = sf.dz = 0.0;
+    if (sf.L > 0.0) {
+        sf.dr = -(sf.R - 0.5 * spec->skirt_diameter) / sf.L;
+        sf.dz = -sqrt(1.0 - sf.dr * sf.dr);
+    }
 
     ring *rg = NULL;
-    int nr = 0;
-    if ((st = plan_rings(model, spec, &sf, &rg, &nr)) != CANOPY_OK) return st;
+    int nr = 0, n_rim = 0;
+    if ((st = plan_rings(model, spec, &sf, &rg, &nr, &n_rim)) != CANOPY_OK)
+        return st;
     int max_count = 0;
     for (int i = 0; i <= nr; ++i)
         if (rg[i].count > max_count) max_count = rg[i].count;
@@ -635,19 +690,20 @@ canopy_status canopy_build_circular(canopy_model *model,
 
     canopy_build_mark mark;
     canopy_build_mark_take(model, &mark);
-    st = build(model, spec, rg, nr, &sf, chain, chain + max_count + 1);
+    st = build(model, spec, rg, nr, n_rim, &sf, chain, chain + max_count + 1);
     if (st == CANOPY_OK) {
         if (attach_out)
             for (int k = 0; k < spec->n_attachments; ++k)
                 attach_out[k] = rg[nr].first + k * rg[nr].per_gore;
         canopy_clear_message(model);
     } else {
-        char args[240];
+        char args[320];
         snprintf(args, sizeof args, "spec.diameter %g, spec.vent_diameter "
-                 "%g, spec.height %g, spec.edge_length %g and "
-                 "spec.n_attachments %d at spec.center (%g, %g, %g)",
+                 "%g, spec.height %g, spec.skirt_length %g, spec.edge_length "
+                 "%g and spec.n_attachments %d at spec.center (%g, %g, %g)",
                  spec->diameter, spec->vent_diameter, spec->height,
-                 spec->edge_length, spec->n_attachments, spec->center[0],
+                 spec->skirt_length, spec->edge_length, spec->n_attachments,
+                 spec->center[0],
                  spec->center[1], spec->center[2]);
         st = canopy_build_abort(model, &mark, st, WHO, args);
     }

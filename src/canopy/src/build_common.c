@@ -59,6 +59,8 @@ canopy_circular_spec canopy_circular_spec_default(void)
     s.diameter = 2.134;
     s.vent_diameter = 0.0;
     s.height = 0.0;
+    s.skirt_length = 0.0;
+    s.skirt_diameter = 0.0;
     s.edge_length = 0.1;
     s.center[0] = s.center[1] = s.center[2] = 0.0;
     s.n_attachments = 16;

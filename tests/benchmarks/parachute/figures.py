@@ -7,7 +7,9 @@ Prints BENCH lines (name value unit) and '# ' comment lines.
 mainjob: C_D0 of the case over the interval the 7 ft study reads (the
 steady interval of its first run in python/canopyfoam/validation.py),
 against the finest run of the study resolution7ftHeld and its GCI (bin/
-canopy-validate converged resolution7ftHeld, from the committed records).
+canopy-validate converged resolution7ftHeld, from the committed records);
+then both over the main job's own interval (run 7ft-default's), when the
+finest run is in build/validation.
 
 levels: for each run of resolution7ftHeld found in build/validation (the
 study's own runs, 2 ranks), over the same interval: cells, wall seconds
@@ -55,6 +57,24 @@ def main_job(case_dir, wall):
                                  conv["extrapolated"]))
     print("BENCH parachute_main_job_C_D0_error %.4f fraction"
           % ((cd0 - ref) / ref))
+    # The same comparison over the main job's own interval (its Allrun's
+    # report reads the last third), the finest level read over it too
+    job = val.RUN_BY_ID["7ft-default"]
+    finest = val.RUN_BY_ID[conv["runs"][0]]
+    if val.run_state(finest) != "complete":
+        print("# %s not in build/validation: no comparison over %g-%g s"
+              % (finest.ident, job.steady_start, job.steady_end))
+        return
+    own = rep.analyse(case_dir, steady_start=job.steady_start,
+                      steady_end=job.steady_end)["dragCoefficient"][
+                          "weightBalance"]
+    fine = rep.analyse(finest.case_dir, steady_start=job.steady_start,
+                       steady_end=job.steady_end)["dragCoefficient"][
+                           "weightBalance"]
+    print("# over the main job's %g-%g s: C_D0 %.4f against %.4f (%s)"
+          % (job.steady_start, job.steady_end, own, fine, finest.ident))
+    print("BENCH parachute_main_job_C_D0_error_own_window %.4f fraction"
+          % ((own - fine) / fine))
 
 
 def step_costs(log, t0, t1):

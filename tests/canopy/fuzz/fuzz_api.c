@@ -730,6 +730,8 @@ static canopy_status act_build(fuzz *f, int which)
         s.edge_length = pick(f, 0.1, 0.4);
         s.vent_diameter = rnd(f, 2) ? 0.0 : pick(f, 0.0, 0.3);
         s.height = rnd(f, 2) ? 0.0 : pick(f, 0.0, 0.5);
+        s.skirt_length = rnd(f, 3) ? 0.0 : pick(f, 0.0, 0.4);
+        s.skirt_diameter = pick(f, 0.0, 2.0);
         s.n_attachments = rnd(f, 5) ? 4 + rnd(f, 20) : pick_index(f, 9);
         s.radial_tapes = rnd(f, 2);
         pick_point(f, s.center);

@@ -87,12 +87,19 @@ Foam::couplingOutput::couplingOutput
             << " in " << canopyStructure::outputPath(runTime) << ".h5:"
             << " the canopy starts from its initial shape" << endl;
     }
-    nominalDiameter_ =
-        structure.dict().subOrEmptyDict("canopy").lookupOrDefault<scalar>
+    // The parachute's nominal diameter as its specification states it
+    // (canopy.nominalDiameter, required with an extended skirt, whose rim
+    // is not it), else the canopy's diameter, else a disc of its area
+    const dictionary canopyDict(structure.dict().subOrEmptyDict("canopy"));
+    nominalDiameter_ = canopyDict.lookupOrDefault<scalar>
+    (
+        "nominalDiameter",
+        canopyDict.lookupOrDefault<scalar>
         (
             "diameter",
             Foam::sqrt(4*structure.canopyArea()/constant::mathematical::pi)
-        );
+        )
+    );
 }
 
 

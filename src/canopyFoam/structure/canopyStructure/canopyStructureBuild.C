@@ -204,7 +204,56 @@ wordList readCanopyShape(const scopedEntryReader& cr, structureSpec& s)
               + scopedEntryReader::format(circ.diameter)
             );
         }
-        used.append(wordList{"diameter", "ventDiameter", "height"});
+        used.append
+        (
+            wordList
+            {
+                "diameter", "ventDiameter", "height", "extendedSkirt",
+                "nominalDiameter"
+            }
+        );
+        // The nominal diameter (of the nominal area, the cloth's with its
+        // vent) is the output's reference length: the diameter unless an
+        // extended skirt makes the hem narrower than the rim
+        if (cr.found("nominalDiameter") || cr.found("extendedSkirt"))
+        {
+            cr.positive("nominalDiameter", "nominal diameter [m]");
+        }
+        if (const dictionary* sd = cr.optionalDict("extendedSkirt"))
+        {
+            // A band from the rim down and inwards to a narrower hem
+            const scopedEntryReader sr(*sd, cr.name("extendedSkirt"));
+            circ.skirt_length = sr.positive("length", "slant length [m]");
+            circ.skirt_diameter =
+                sr.positive("hemDiameter", "hem diameter [m]");
+            if (!(circ.skirt_diameter < circ.diameter))
+            {
+                sr.fail
+                (
+                    "hemDiameter",
+                    "= " + scopedEntryReader::format(circ.skirt_diameter)
+                  + " must be smaller than " + cr.name("diameter") + " = "
+                  + scopedEntryReader::format(circ.diameter)
+                  + " (the hem is narrower than the rim)"
+                );
+            }
+            if (!(0.5*(circ.diameter - circ.skirt_diameter) < circ.skirt_length))
+            {
+                sr.fail
+                (
+                    "length",
+                    "= " + scopedEntryReader::format(circ.skirt_length)
+                  + " must exceed the radial step from the rim to the hem, ("
+                  + cr.name("diameter") + " - " + sr.name("hemDiameter")
+                  + ")/2 = "
+                  + scopedEntryReader::format
+                    (
+                        0.5*(circ.diameter - circ.skirt_diameter)
+                    )
+                );
+            }
+            sr.warnUnused(wordList{"length", "hemDiameter"});
+        }
         if (s.type == "parabolic")
         {
             circ.height = cr.positive("height", "apex height above the skirt [m]");
