@@ -1263,22 +1263,11 @@ T10_SEED_SHAPE = [(PROPS, "canopy/diameter", "10.7"),
 for _run in RUNS:
     if _run.tutorial == T10:
         _run.edits = T10_SEED_SHAPE + _run.edits
-# The T-10 as the extended-skirt canopy it is (Mills Manufacturing, "T-10
-# series characteristics"): its hem 24.5 ft (7.47 m) across and a skirt
-# band 3 ft (0.914 m) long (globalsecurity.org, "T-10 Parachute"), the
-# nominal area of 35 ft (10.7 m) kept: the tutorial's 1.6 m paraboloid
-# then ends in a rim of 8.688 m (its area with the band's and the vent's
-# 89.92 m^2), the vent's centre 1.6 (1 - (0.535/4.344)^2) = 1.576 m above
-# the rim (the tutorial's canopy now; these edits made it from the seed's
-# shape in the first run)
-T10_SKIRT = [(PROPS, "canopy/diameter", "8.688"),
-             (PROPS, "canopy/centre", "(0 0 1.576)"),
-             (PROPS, "canopy/nominalDiameter", "10.7"),
-             (PROPS, "canopy/extendedSkirt",
-              "{ length 0.9144; hemDiameter 7.4676; }")]
+# The T-10 as the extended-skirt canopy it is (the tutorial's canopy,
+# constant/canopyProperties: a hem 7.47 m across, a band 0.914 m long, the
+# nominal area kept), against the seed's paraboloid (T10-m163-w8)
 RUNS += [ten("T10-m163-skirt", "163 kg on a guide wire, the extended skirt "
-             "(hem 7.47 m, band 0.914 m), box 8 D0 wide, 11 cells across D0",
-             edits=T10_SEED_SHAPE + T10_SKIRT)]
+             "(hem 7.47 m, band 0.914 m), box 8 D0 wide, 11 cells across D0")]
 # On the extended skirt (the tutorial as it is): the box's width at the
 # tutorial's 11 cells across D0 (T10-m163-skirt is the 8 D0 box), the
 # resolution at 163 kg (13, 20 and 30 cells across D0: ratios 1.54 and
@@ -2515,7 +2504,8 @@ def skirt_t10_lines(results):
         v = x["descentVelocity"]
         return (v["mean"], v.get("ci95", float("nan")),
                 x["dragCoefficient"]["weightBalance"],
-                x["projectedDiameter"]["mean"] / 10.7)
+                x["projectedDiameter"]["mean"]
+                / x["parameters"]["nominalDiameter"]["value"])
     va, ca, cda, dpa = row(a)
     vb, cb, cdb, dpb = row(b)
     lines += ["| canopy | descent [m/s] (95 %) | C_D0 | Dp/D0 |",

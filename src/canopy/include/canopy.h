@@ -226,7 +226,7 @@ canopy_material canopy_material_line_default(void);
  * when there is a vent; the rim r = R lies `height (1 - (r_vent/R)^2)` below
  * it. An extended skirt (skirt_length > 0) is a band of cloth beyond the rim,
  * a conical frustum of slant `skirt_length` from the rim down and inwards to
- * the hem of diameter `skirt_diameter` (R - skirt_diameter/2 <= skirt_length):
+ * the hem of diameter `skirt_diameter` (R - skirt_diameter/2 < skirt_length):
  * the hem, where the lines attach, is narrower than the rim, as in extended-
  * skirt canopies (Knacke, Parachute Recovery Systems Design Manual, 1991,
  * Table 5-1). Rings of nodes start at angle 0
@@ -241,8 +241,8 @@ typedef struct canopy_circular_spec {
     double vent_diameter;  /* 0: no vent */
     double height;         /* apex above the rim; 0: flat */
     double skirt_length;   /* extended skirt's slant length; 0: none */
-    double skirt_diameter; /* extended skirt's hem diameter, in
-                              [diameter - 2 skirt_length, diameter]; used only
+    double skirt_diameter; /* extended skirt's hem diameter, > 0 and in
+                              (diameter - 2 skirt_length, diameter); used only
                               when skirt_length > 0 */
     double edge_length;    /* target triangle edge length */
     double center[3];

@@ -256,7 +256,7 @@ wordList readCanopyShape(const scopedEntryReader& cr, structureSpec& s)
         }
         if (s.type == "parabolic")
         {
-            circ.height = cr.positive("height", "apex height above the skirt [m]");
+            circ.height = cr.positive("height", "apex height above the rim [m]");
         }
         else
         {
