@@ -31,7 +31,9 @@ Definitions used throughout (stated in the summary too):
   window, FFT; the peak bin k >= 1 gives the frequency, refined between bins
   with the Hann ratio formula; the bin width df = 1/(N dt) is the stated
   resolution. A peak at bin k < 2 (fewer than two periods in the interval)
-  is reported as not resolved;
+  is reported as not resolved; the same above f = 0.1 V / Dp (Strouhal
+  number f Dp / V >= 0.1, Dp the mean projected diameter), which leaves
+  out the descent's slow swings, with the Strouhal number of its peak;
 - C_D from the force balance at terminal velocity, W = 1/2 rho V^2 S0 C_D,
   with W = total mass |g|, V the mean descent speed over the interval and
   S0 = pi D0^2 / 4 the nominal area; and C_D from the mean pressure force
@@ -133,6 +135,12 @@ REFERENCES = {
 DEFAULT_STEADY_FRACTION = 1.0 / 3.0
 MIN_STEADY_SAMPLES = 4
 MIN_PEAK_BIN = 2
+# The breathing band's lower end in Strouhal number f Dp / V: a canopy's
+# breathing has f Dp / V of order 0.5 (the seed's measurements: the 7 ft
+# canopy about 2 Hz at 4.27 m/s and 1.6 m across, 0.75; the T-10 a period
+# of 2.3 s at 6.7 m/s and 7.8 m, 0.51), and a fifth of that leaves out the
+# descent's slow swings, periods of ten and more Dp / V
+BREATHING_STROUHAL_MIN = 0.1
 
 
 class ReportError(Exception):
@@ -516,8 +524,10 @@ def spectrum(t, y):
     return np.fft.rfftfreq(n, dt), amplitude, 1.0 / (n * dt)
 
 
-def breathing(t, diameter):
-    """The breathing frequency of the projected diameter over [t0, t1].
+def breathing(t, diameter, f_min=0.0):
+    """The breathing frequency of the projected diameter over [t0, t1]:
+    the spectrum's largest bin (bin 0 excluded), or with f_min > 0 its
+    largest local maximum at or above f_min [Hz].
 
     Returns a dict: frequency (refined, or None when not resolved),
     binFrequency (the peak bin's centre), resolution (bin width df),
@@ -539,7 +549,23 @@ def breathing(t, diameter):
     if len(a) < 3 or float(np.max(a[1:])) <= 1e-12 * scale:
         result["note"] = "no oscillation of the diameter"
         return result
-    k = 1 + int(np.argmax(a[1:]))
+    first = max(1, int(math.ceil(f_min / df - 1e-9)))
+    if first >= len(a):
+        result["note"] = ("no bin at or above %.3g Hz (Nyquist %.3g Hz)"
+                          % (f_min, f[-1]))
+        return result
+    k = first + int(np.argmax(a[first:]))
+    if f_min > 0.0:
+        # above f_min, the largest local maximum: a larger peak below it
+        # leaks a falling flank into the band's first bins
+        peaks = [j for j in range(first, len(a) - 1)
+                 if a[j] > a[j - 1] and a[j] >= a[j + 1]
+                 and a[j] > 1e-12 * scale]
+        if not peaks:
+            result["note"] = ("no peak at or above %.3g Hz: the spectrum "
+                              "falls across the band" % f_min)
+            return result
+        k = max(peaks, key=lambda j: a[j])
     result["peakBin"] = k
     result["binFrequency"] = float(f[k])
     result["amplitude"] = float(a[k])
@@ -560,6 +586,23 @@ def breathing(t, diameter):
     result["periods"] = float(frequency / df)
     result["resolved"] = True
     return result
+
+
+def breathing_band(t, diameter, speed, mean_diameter):
+    """The breathing in the band f Dp / V >= BREATHING_STROUHAL_MIN (Dp the
+    mean projected diameter, V the mean descent speed): the breathing
+    analysis above that frequency, with the Strouhal number f Dp / V of
+    the peak found. None when the parachute is not descending."""
+    if not speed > 0.0 or not mean_diameter > 0.0:
+        return None
+    f_min = BREATHING_STROUHAL_MIN * speed / mean_diameter
+    b = {k: v for k, v in breathing(t, diameter, f_min).items()
+         if not k.startswith("_")}
+    b["fMin"] = f_min
+    b["strouhalMin"] = BREATHING_STROUHAL_MIN
+    b["strouhal"] = (b["frequency"] * mean_diameter / speed
+                     if b["resolved"] else None)
+    return b
 
 
 def suspension_swing(t, offset, ghat):
@@ -644,6 +687,7 @@ def analyse(case_dir, fraction=None, steady_start=None, diameter=None,
     d_stats = time_statistics(ts, D[m])
     f_stats = time_statistics(ts, drag[m])
     b = breathing(ts, D[m])
+    b_band = breathing_band(ts, D[m], v_stats["mean"], d_stats["mean"])
     swing = suspension_swing(ts, series.columns(
         "canopy_x", "canopy_y", "canopy_z")[m] - series.columns(
         "payload_x", "payload_y", "payload_z")[m], ghat)
@@ -685,6 +729,7 @@ def analyse(case_dir, fraction=None, steady_start=None, diameter=None,
         "projectedDiameter": d_stats,
         "pressureForceAgainstGravity": f_stats,
         "breathing": {k: v for k, v in b.items() if not k.startswith("_")},
+        "breathingBand": b_band,
         "swing": swing,
         "shape": form,
         "dragCoefficient": cd,
@@ -870,6 +915,15 @@ def format_summary(r):
     else:
         add("  breathing    not resolved (resolution %.3g Hz): %s"
             % (b["resolution"], b["note"]))
+    bb = r.get("breathingBand")
+    if bb and bb["resolved"]:
+        add("  breathing    above St %.2g (f >= %.3g Hz): %.4g Hz, St = f Dp/V "
+            "= %.3g, amplitude %.3g m, %.1f periods"
+            % (bb["strouhalMin"], bb["fMin"], bb["frequency"], bb["strouhal"],
+               bb["amplitude"], bb["periods"]))
+    elif bb:
+        add("  breathing    above St %.2g (f >= %.3g Hz): not resolved: %s"
+            % (bb["strouhalMin"], bb["fMin"], bb["note"]))
     if ref and _reference_breathing(ref):
         add("     ref %-5s %s" % (ref["name"], _reference_breathing(ref)))
     if cd["weightBalance"] is None:

@@ -269,6 +269,43 @@ def test_half_bin_and_direction(tmp):
           r["dragCoefficient"]["pressureForce"], 1.547954, 2e-6)
 
 
+def test_breathing_band():
+    """A slow swing (0.1 Hz, 0.2 m) over a small breathing (0.9 Hz, 0.02 m),
+    0 .. 40 s at 0.01 s: the whole spectrum's peak is the swing, the band
+    from 0.3 Hz finds the breathing (both tones on whole bins of the 40 s
+    window: the Hann formula is exact for a lone tone there, and the other
+    tone's leakage moves it by less than 1e-3 Hz, 0.04 bins); a band that
+    starts on the swing's falling flank finds no peak; and breathing_band's
+    Strouhal number is f Dp / V."""
+    n = 4001
+    t = [DT * i for i in range(n)]
+    y = [1.5 + 0.2 * math.sin(2 * math.pi * 0.1 * x)
+         + 0.02 * math.sin(2 * math.pi * 0.9 * x) for x in t]
+    whole = report.breathing(t, y)
+    close("whole spectrum: the slow swing", whole["frequency"], 0.1, 1e-3,
+          "Hz")
+    band = report.breathing(t, y, 0.3)
+    close("band from 0.3 Hz: the breathing", band["frequency"], 0.9, 1e-3,
+          "Hz")
+    close("band from 0.3 Hz: its amplitude", band["amplitude"], 0.02, 1e-3,
+          "m")
+    flank = report.breathing(t, [1.5 + 0.2 * math.sin(2 * math.pi * 0.1 * x)
+                                 for x in t], 0.125)
+    check("a band on the swing's flank: no peak", not flank["resolved"]
+          and "falls across the band" in flank["note"],
+          "resolved %s, note '%s'" % (flank["resolved"], flank["note"]))
+    tail = report.breathing(t, y, 0.125)
+    close("band from the swing's flank: the breathing, not the flank",
+          tail["frequency"], 0.9, 1e-3, "Hz")
+    bb = report.breathing_band(t, y, 4.0, 1.5)
+    close("breathing_band: f_min = 0.1 V / Dp", bb["fMin"], 0.1 * 4.0 / 1.5,
+          1e-12, "Hz")
+    close("breathing_band: St = f Dp / V", bb["strouhal"], 0.9 * 1.5 / 4.0,
+          1e-3 * 1.5 / 4.0)
+    check("breathing_band: none without descent",
+          report.breathing_band(t, y, 0.0, 1.5) is None, "speed 0")
+
+
 def test_not_resolved(tmp):
     """0 .. 1.2 s: the last third holds 0.8 breathing periods."""
     case = os.path.join(tmp, "short")
@@ -545,6 +582,7 @@ def main():
     def body():
         case, r = test_restarts_and_statistics(tmp)
         test_half_bin_and_direction(tmp)
+        test_breathing_band()
         test_not_resolved(tmp)
         test_missing_quantities(tmp)
         test_command_line(tmp, case, r)
