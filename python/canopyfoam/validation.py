@@ -25,6 +25,7 @@ import math
 import os
 import re
 import shutil
+import signal
 import subprocess
 import sys
 import time
@@ -1322,6 +1323,14 @@ T10_ELEVEN = [(MESH_DICT, "cellsPerDiameter", "11")]
 for _run in RUNS:
     if _run.tutorial == T10 and "-cellsPerDiameter" not in _run.options:
         _run.edits = T10_ELEVEN + _run.edits
+# The box's width at 13 cells across D0, in steady descent at 163 kg (the
+# 8 D0 box is T10-skirt-cpd13-m163): the 11-cell study moved C_D0 by 7 %
+# between 8 and 11 D0 on drifting runs
+RUNS += [ten("T10-skirt-cpd13-m163-w%g" % w, "163 kg on a guide wire, the "
+             "extended skirt, box %g D0 wide, 13 cells across D0" % w,
+             ["-cellsPerDiameter", "13"],
+             edits=[(MESH_DICT, "domain/width", "%g" % w)], start=50, end=80)
+         for w in (5.6, 11)]
 RUNS += [Run("T10-skirt-cpd13-default", T10, "the tutorial's default: the "
              "extended skirt, 100 kg, box 8 D0 wide, 13 cells across D0, to "
              "20 s", reference="T10")]
@@ -1514,6 +1523,11 @@ STUDIES = [
      "against payload (11 cells across D0, box 8 D0 wide)",
      ["T10-skirt-m100", "T10-m163-skirt", "T10-skirt-m300",
       "T10-skirt-m600"]),
+    ("domainT10SkirtLong", "T-10 at 163 kg on a guide wire, the extended "
+     "skirt: the box's width in steady descent (13 cells across D0, to 80 "
+     "s, read over 50-80 s)",
+     ["T10-skirt-cpd13-m163-w5.6", "T10-skirt-cpd13-m163",
+      "T10-skirt-cpd13-m163-w11"]),
     ("payloadT10SkirtLong", "T-10 on a guide wire, the extended skirt: "
      "descent against payload in steady descent (13 cells across D0, box 8 "
      "D0 wide, to 80 s, read over 50-80 s)",
@@ -1602,6 +1616,44 @@ def solver_log(case_dir):
     return os.path.join(case_dir, "log.canopyPimpleFoam")
 
 
+def terminate_tree(pid):
+    """SIGTERM to a process and all its descendants (Allrun, mpirun, the
+    solver's ranks), the deepest first."""
+    children = {}
+    for entry in os.listdir("/proc"):
+        if not entry.isdigit():
+            continue
+        try:
+            with open("/proc/%s/stat" % entry) as f:
+                ppid = int(f.read().rsplit(")", 1)[1].split()[1])
+        except (OSError, IndexError, ValueError):
+            continue
+        children.setdefault(ppid, []).append(int(entry))
+    order, todo = [], [pid]
+    while todo:
+        p = todo.pop()
+        order.append(p)
+        todo.extend(children.get(p, []))
+    for p in reversed(order):
+        try:
+            os.kill(p, signal.SIGTERM)
+        except OSError:
+            pass
+
+
+def last_time(case_dir):
+    """The solver log's last 'Time = ' ('?' without one)."""
+    t = "?"
+    try:
+        with open(solver_log(case_dir), errors="replace") as f:
+            for line in f:
+                if line.startswith("Time = "):
+                    t = line.split()[2]
+    except OSError:
+        pass
+    return t
+
+
 def report_json(case_dir):
     return os.path.join(case_dir, "postProcessing", "report", "report.json")
 
@@ -1623,14 +1675,25 @@ def running_pid(case_dir):
     return pid
 
 
+def stopped_file(case_dir):
+    """Marks a run whose canopy-validate was stopped (Ctrl-C, SIGTERM) to
+    be continued later with --continue."""
+    return os.path.join(case_dir, "validation-stopped")
+
+
 def run_state(run):
     """'complete', 'running' (its canopy-validate process is alive),
-    'failed' (a solver log without End) or 'missing'."""
+    'stopped' (its canopy-validate was stopped, or killed with its session,
+    before the solver ended: --continue goes on with it), 'failed' (a
+    solver log without End) or 'missing'."""
     log = solver_log(run.case_dir)
     if not os.path.exists(log):
         return "missing"
     if running_pid(run.case_dir) is not None:
         return "running"
+    if os.path.exists(stopped_file(run.case_dir)) or \
+            os.path.exists(running_file(run.case_dir)):
+        return "stopped"
     with open(log, errors="replace") as f:
         ended = any(line.startswith("End") for line in f)
     if ended and os.path.exists(report_json(run.case_dir)):
@@ -1702,8 +1765,15 @@ def execute(run, ranks, resume=False):
                   "w") as f:
             f.write("%.1f %d\n" % (earlier + time.time() - start, ranks))
 
+    if os.path.exists(stopped_file(run.case_dir)):
+        os.remove(stopped_file(run.case_dir))
     with open(running_file(run.case_dir), "w") as f:
         f.write("%d\n" % os.getpid())
+
+    def stop(signum, frame):
+        raise KeyboardInterrupt
+    previous = signal.signal(signal.SIGTERM, stop)
+    proc = None
     try:
         with open(log, "a" if resume else "w") as out:
             proc = subprocess.Popen(cmd, stdout=out,
@@ -1717,7 +1787,22 @@ def execute(run, ranks, resume=False):
                 except subprocess.TimeoutExpired:
                     pass
         record_wall()
+    except KeyboardInterrupt:
+        # stopped by hand or with the session: the solver's run goes with
+        # it, and the case is kept for --continue
+        if proc is not None and proc.poll() is None:
+            terminate_tree(proc.pid)
+            proc.wait()
+        record_wall()
+        with open(stopped_file(run.case_dir), "w") as f:
+            f.write("%s\n" % time.strftime("%Y-%m-%d %H:%M:%S"))
+        print("canopy-validate: %s stopped after %.0f s; `bin/canopy-"
+              "validate run --continue %s` goes on from its latest write"
+              % (run.ident, earlier + time.time() - start, run.ident),
+              flush=True)
+        raise
     finally:
+        signal.signal(signal.SIGTERM, previous)
         os.remove(running_file(run.case_dir))
     wall = earlier + time.time() - start
     print("canopy-validate: %s %s after %.0f s" % (
@@ -1835,6 +1920,11 @@ def record(run):
         # of an earlier run of the same definition
         return None, "running (`bin/canopy-progress %s %d`)" % (
             run.case_dir, running_pid(run.case_dir))
+    if state == "stopped":
+        # a part of a run, not a result: no record until it is complete
+        return None, "stopped at t = %s s, to be continued (`bin/canopy-" \
+            "validate run --continue %s`)" % (last_time(run.case_dir),
+                                              run.ident)
     if state == "missing":
         rec, why = archive.load(ARCHIVE_DIR, run)
         if rec is not None:
@@ -4113,7 +4203,7 @@ def write_report():
                    "studies therefore run on a guide wire.", ""]
         if name == "skirtT10":
             md += skirt_t10_lines(results)
-        if name == "payloadT10SkirtLong":
+        if name in ("payloadT10SkirtLong", "domainT10SkirtLong"):
             md += [HANDBOOK_T10 % t10_handbook_cd0(), ""]
         if name in ("domainT10", "resolutionT10", "freeT10", "skirtT10",
                     "domainT10Skirt", "resolutionT10Skirt",
@@ -4126,7 +4216,8 @@ def write_report():
                    "(D0/V ≈ 1.8 s), so the statistics are read over "
                    "30–50 s.", ""]
         if name in ("domain7ft", "domain7ftLong", "domain7ftStiff",
-                    "freeDomain7ft", "domainT10", "domainT10Skirt"):
+                    "freeDomain7ft", "domainT10", "domainT10Skirt",
+                    "domainT10SkirtLong"):
             wide = sorted(
                 [(float(dict((e[1], e[2]) for e in run.edits).get(
                     "domain/width", "8")), rec["analysis"])
@@ -4551,7 +4642,7 @@ def main(argv=None):
                   file=sys.stderr)
             ok = False
             continue
-        resume = args.resume and run_state(run) == "failed"
+        resume = args.resume and run_state(run) in ("failed", "stopped")
         try:
             ok = execute(run, args.np, resume) and ok
             record(run)     # its record in docs/validation/runs

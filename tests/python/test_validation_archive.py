@@ -130,8 +130,10 @@ def test_report_keeps_and_rewrites(run):
 
 def test_running_run(tmp):
     """A run whose canopy-validate is alive is 'running' and gets no record
-    yet; once its process has gone (killed with its session) it is a
-    stopped run, 'failed', that --continue picks up."""
+    yet; once its process has gone (killed with its session), or when it
+    was stopped (its marker), it is 'stopped', without a record, until
+    --continue completes it; a solver log without End and neither file is
+    'failed' and is recorded."""
     run = val.Run("synthetic-running", "parachutes/flatCircular7ft",
                   "synthetic run still going")
     make_case(run.case_dir)
@@ -149,9 +151,45 @@ def test_running_run(tmp):
     gone.wait()
     with open(val.running_file(run.case_dir), "w") as f:
         f.write("%d\n" % gone.pid)
-    check("a run whose process has gone is a stopped run",
-          val.run_state(run) == "failed", "state %s" % val.run_state(run))
+    rec, why = val.record(run)
+    check("a run whose process has gone is stopped, without a record",
+          val.run_state(run) == "stopped" and rec is None
+          and why.startswith("stopped at t = 6 s")
+          and not os.path.exists(path),
+          "state %s, record %s, why %s" % (val.run_state(run), rec, why))
+    os.remove(val.running_file(run.case_dir))
+    with open(val.stopped_file(run.case_dir), "w") as f:
+        f.write("stopped\n")
+    check("a run marked stopped is stopped",
+          val.run_state(run) == "stopped", "state %s" % val.run_state(run))
+    os.remove(val.stopped_file(run.case_dir))
+    rec, why = val.record(run)
+    check("a solver log without End and no marker: failed, recorded",
+          val.run_state(run) == "failed" and rec is not None
+          and not rec["complete"] and os.path.exists(path),
+          "state %s, record %s" % (val.run_state(run), rec is not None))
+    os.remove(path)
     shutil.rmtree(run.case_dir)
+
+
+def test_terminate_tree():
+    """terminate_tree stops a process and its descendants: a shell whose
+    two children sleep (as Allrun's mpirun and ranks would run)."""
+    shell = subprocess.Popen(["bash", "-c", "sleep 60 & sleep 60 & wait"])
+    import time
+    time.sleep(0.3)
+    kids = [int(p) for p in subprocess.run(
+        ["pgrep", "-P", str(shell.pid)], capture_output=True,
+        text=True).stdout.split()]
+    val.terminate_tree(shell.pid)
+    shell.wait(timeout=10)
+    time.sleep(0.3)
+    alive = [k for k in kids if os.path.exists("/proc/%d" % k)
+             and open("/proc/%d/stat" % k).read().rsplit(")", 1)[1].split()[0]
+             != "Z"]
+    check("terminate_tree: the shell and its children end",
+          len(kids) == 2 and not alive,
+          "children %s, still alive %s" % (kids, alive))
 
 
 def main():
@@ -161,6 +199,7 @@ def main():
         use_tmp(tmp)
         run = test_record_round_trip(tmp)
         test_running_run(tmp)
+        test_terminate_tree()
         test_report_keeps_and_rewrites(run)
     return synthetic.run_checks(tmp, body, "validation archive")
 
