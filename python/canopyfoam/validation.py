@@ -4662,4 +4662,6 @@ def main(argv=None):
         except RuntimeError as e:
             print("canopy-validate: %s" % e, file=sys.stderr)
             ok = False
+        except KeyboardInterrupt:
+            return 130      # stopped: execute said where it stands
     return 0 if ok else 1
