@@ -554,7 +554,6 @@ def breathing(t, diameter, f_min=0.0):
         result["note"] = ("no bin at or above %.3g Hz (Nyquist %.3g Hz)"
                           % (f_min, f[-1]))
         return result
-    k = first + int(np.argmax(a[first:]))
     if f_min > 0.0:
         # above f_min, the largest local maximum: a larger peak below it
         # leaks a falling flank into the band's first bins
@@ -566,6 +565,8 @@ def breathing(t, diameter, f_min=0.0):
                               "falls across the band" % f_min)
             return result
         k = max(peaks, key=lambda j: a[j])
+    else:
+        k = first + int(np.argmax(a[first:]))
     result["peakBin"] = k
     result["binFrequency"] = float(f[k])
     result["amplitude"] = float(a[k])
