@@ -1,4 +1,4 @@
-"""report.py — analysis of a canopyPimpleFoam run's canopy.dat time series (terminal descent velocity, breathing, drag coefficients) and the summary, report.json and plots of bin/canopy-report.
+"""report.py — analysis of a canopyPimpleFoam run's canopy.dat time series (terminal descent velocity, breathing, drag coefficients, swing and glide) and the summary, report.json and plots of bin/canopy-report.
 
 The solver writes postProcessing/canopy/<startTime>/canopy.dat, one row per
 time step, whitespace separated, comment lines starting with '#':
@@ -141,6 +141,17 @@ MIN_PEAK_BIN = 2
 # of 2.3 s at 6.7 m/s and 7.8 m, 0.51), and a fifth of that leaves out the
 # descent's slow swings, periods of ten and more Dp / V
 BREATHING_STROUHAL_MIN = 0.1
+# The suspension's angle beyond which a run is said to swing: the
+# smallest oscillation a handbook lists for a stable canopy's class
+# (Knacke, NWC TP 6575, Table 5-1: ribbon and ringslot canopies 0 to ±3°,
+# the solid canopies ±10° and more) rounded up
+SWING_ONSET_DEG = 5.0
+# The window over which a departure from the vertical descent is fitted
+# as exp(rate t): the payload's speed across gravity from 1 % to 20 % of
+# its descent, above the start's round-off and below the swing's
+# saturation
+SWING_GROWTH_LOW = 0.01
+SWING_GROWTH_HIGH = 0.2
 
 
 class ReportError(Exception):
@@ -606,28 +617,97 @@ def breathing_band(t, diameter, speed, mean_diameter):
     return b
 
 
-def suspension_swing(t, offset, ghat):
-    """The suspension's angle to the vertical over the interval, from the
-    canopy's centre's offset from the payload (n x 3, ground frame):
-    theta = atan(|offset across gravity| / offset against gravity).
-    Returns None when the offsets are not in the data (an older solver's
-    canopy.dat), else a dict: angleMax and angleRms [degrees], and the
-    swing's frequency, period and amplitude [m] from the spectrum of the
-    offset's component across gravity along which it varies most (the
-    breathing analysis's peak finder; frequency None when not resolved)."""
+def suspension_angle(offset, ghat):
+    """The suspension's angle to the vertical [degrees] and the offset's
+    part across gravity, from the canopy's centre's offset from the
+    payload (n x 3, ground frame): theta = atan(|offset across gravity| /
+    offset against gravity); None when the offsets are not in the data
+    (an older solver's canopy.dat)."""
     offset = np.asarray(offset, dtype=float)
-    if len(t) < 2 or not np.all(np.isfinite(offset)):
+    if len(offset) == 0 or not np.all(np.isfinite(offset)):
         return None
     up = -np.asarray(ghat, dtype=float)
     along = offset @ up
     across = offset - np.outer(along, up)
     theta = np.degrees(np.arctan2(np.linalg.norm(across, axis=1), along))
+    return theta, across
+
+
+def swing_onset(t, theta, threshold=SWING_ONSET_DEG):
+    """The first time the suspension's angle exceeds threshold degrees,
+    or None."""
+    above = np.nonzero(np.asarray(theta) > threshold)[0]
+    return float(t[above[0]]) if len(above) else None
+
+
+def swing_growth(t, horizontal, descent, low=SWING_GROWTH_LOW,
+                 high=SWING_GROWTH_HIGH):
+    """The growth of a departure from the vertical descent, over the
+    whole run: the payload's speed across gravity H against its descent
+    V, from the last time H/V is below `low` before it first passes
+    `high`; H grows there as exp(rate t) when the vertical descent is
+    unstable. Returns None when H/V never passes `high` (or the window has
+    fewer than 4 samples), else rate [1/s] (the least-squares slope of
+    ln H), doublingTime ln 2 / rate [s], the mean descent over the window
+    [m/s], and the window's start and end."""
+    t = np.asarray(t, dtype=float)
+    H = np.asarray(horizontal, dtype=float)
+    V = np.asarray(descent, dtype=float)
+    ratio = H / np.maximum(np.abs(V), 1e-12)
+    above = np.nonzero(ratio > high)[0]
+    if not len(above):
+        return None
+    end = above[0]
+    below = np.nonzero(ratio[:end] < low)[0]
+    if not len(below):
+        return None
+    start = below[-1]
+    if end - start + 1 < 4 or np.any(H[start:end + 1] <= 0.0):
+        return None
+    rate = float(np.polyfit(t[start:end + 1], np.log(H[start:end + 1]),
+                            1)[0])
+    return {"rate": rate,
+            "doublingTime": (math.log(2.0) / rate if rate > 0 else None),
+            "descent": float(np.mean(V[start:end + 1])),
+            "start": float(t[start]), "end": float(t[end]),
+            "low": low, "high": high}
+
+
+def glide(t, velocity, ghat, speed):
+    """The interval's glide: the payload's mean velocity across gravity
+    (a swing about the vertical averages out, a glide does not), its
+    magnitude [m/s] and its angle to the vertical atan(glide / descent)
+    [degrees]."""
+    velocity = np.asarray(velocity, dtype=float)
+    ghat = np.asarray(ghat, dtype=float)
+    across = velocity - np.outer(velocity @ ghat, ghat)
+    w = trapezoid_weights(t)
+    mean = np.sum(w[:, None] * across, axis=0) / np.sum(w)
+    g = float(np.linalg.norm(mean))
+    return {"speed": g,
+            "angle": float(np.degrees(math.atan2(g, speed)))}
+
+
+def suspension_swing(t, offset, ghat):
+    """The suspension's angle to the vertical over the interval (see
+    suspension_angle). Returns None when the offsets are not in the data,
+    else a dict: angleMax, angleMean and angleRms [degrees], and the
+    swing's frequency, period and amplitude [m] from the spectrum of the
+    offset's component across gravity along which it varies most (the
+    breathing analysis's peak finder; frequency None when not resolved)."""
+    if len(t) < 2:
+        return None
+    angle = suspension_angle(offset, ghat)
+    if angle is None:
+        return None
+    theta, across = angle
     w = trapezoid_weights(t)
     # the direction across gravity in which the offset varies most
     dev = across - np.sum(w[:, None] * across, axis=0) / np.sum(w)
     _, _, vt = np.linalg.svd(dev * np.sqrt(w)[:, None], full_matrices=False)
     peak = breathing(t, dev @ vt[0])
     return {"angleMax": float(np.max(theta)),
+            "angleMean": float(np.sum(w * theta) / np.sum(w)),
             "angleRms": float(math.sqrt(np.sum(w * theta ** 2)
                                         / np.sum(w))),
             "frequency": peak["frequency"],
@@ -689,9 +769,17 @@ def analyse(case_dir, fraction=None, steady_start=None, diameter=None,
     f_stats = time_statistics(ts, drag[m])
     b = breathing(ts, D[m])
     b_band = breathing_band(ts, D[m], v_stats["mean"], d_stats["mean"])
-    swing = suspension_swing(ts, series.columns(
-        "canopy_x", "canopy_y", "canopy_z")[m] - series.columns(
-        "payload_x", "payload_y", "payload_z")[m], ghat)
+    offset = series.columns("canopy_x", "canopy_y", "canopy_z") \
+        - series.columns("payload_x", "payload_y", "payload_z")
+    swing = suspension_swing(ts, offset[m], ghat)
+    angle = suspension_angle(offset, ghat)
+    theta = None if angle is None else angle[0]
+    if swing is not None:
+        swing["onset"] = swing_onset(t, theta)
+        swing["onsetThreshold"] = SWING_ONSET_DEG
+        swing["glide"] = glide(ts, np.asarray(U, dtype=float)[m], ghat,
+                               v_stats["mean"])
+        swing["growth"] = swing_growth(t, H, V)
     cd = drag_coefficients(v_stats["mean"], f_stats["mean"],
                            params["totalMass"][0], g,
                            params["rho"][0], D0)
@@ -745,6 +833,8 @@ def analyse(case_dir, fraction=None, steady_start=None, diameter=None,
         "_series": series,
         "_breathing": b,
         "_descent": V,
+        "_angle": theta,
+        "_horizontal": H,
     }
     if reference is not None:
         report["reference"] = dict(REFERENCES[reference], name=reference)
@@ -905,6 +995,23 @@ def format_summary(r):
                 "; period %.3g s, amplitude %.3g m" % (
                     sw["period"], sw["amplitude"]) if sw["period"]
                 else "; no period resolved"))
+        if sw.get("glide"):
+            add("  glide        %.3g m/s across gravity on average over the "
+                "interval (%.3g deg from the vertical); mean suspension "
+                "angle %.3g deg; %s" % (
+                    sw["glide"]["speed"], sw["glide"]["angle"],
+                    sw["angleMean"],
+                    "beyond %g deg from %.4g s" % (sw["onsetThreshold"],
+                                                   sw["onset"])
+                    if sw["onset"] is not None else
+                    "never beyond %g deg" % sw["onsetThreshold"]))
+        gr = sw.get("growth")
+        if gr:
+            add("  departure    the speed across gravity grows as exp(%.3g "
+                "t) (doubling in %.3g s) from %.3g to %.3g s (%g to %g of "
+                "the descent)" % (gr["rate"], gr["doublingTime"] or
+                                  float("inf"), gr["start"], gr["end"],
+                                  gr["low"], gr["high"]))
     add("  diameter     %.4g m = %.3f D0  std %.3g  min %.4g  max %.4g"
         % (d["mean"], d["mean"] / D0, d["std"], d["min"], d["max"]))
     add(shape_summary(r.get("shape"), D0))
@@ -971,7 +1078,8 @@ def json_ready(report):
 
 
 def plot(report, out_dir):
-    """Write descentVelocity.png and projectedDiameter.png in out_dir;
+    """Write descentVelocity.png, projectedDiameter.png and (when the
+    data hold the canopy's and payload's positions) swing.png in out_dir;
     return their paths."""
     import matplotlib
     matplotlib.use("Agg")
@@ -1052,6 +1160,29 @@ def plot(report, out_dir):
     fig.savefig(path, dpi=120)
     plt.close(fig)
     paths.append(path)
+
+    theta = report.get("_angle")
+    if theta is not None:
+        fig, (ax1, ax2) = plt.subplots(2, 1, figsize=(8, 6), sharex=True)
+        ax1.plot(t, theta, color="C0", lw=1.2)
+        ax1.axvspan(s["start"], s["end"], color="0.9", zorder=0,
+                    label="steady interval")
+        ax1.set_ylabel("suspension's angle\nto the vertical [deg]")
+        ax1.set_title("%s: swing and glide" % report["case"])
+        ax1.grid(True, alpha=0.3)
+        ax1.legend(loc="best", fontsize=8)
+        ax2.plot(t, report["_horizontal"], color="C1", lw=1.2)
+        ax2.set_ylabel("payload's speed\nacross gravity [m/s]")
+        ax2.set_xlabel("time [s]")
+        ax2.grid(True, alpha=0.3)
+        for x in restarts:
+            ax1.axvline(x, color="0.6", ls=":", lw=0.8)
+            ax2.axvline(x, color="0.6", ls=":", lw=0.8)
+        fig.tight_layout()
+        path = os.path.join(out_dir, "swing.png")
+        fig.savefig(path, dpi=120)
+        plt.close(fig)
+        paths.append(path)
     return paths
 
 
@@ -1084,9 +1215,9 @@ def parse_args(argv):
         description="Summarise a canopyPimpleFoam run from "
                     "postProcessing/canopy/*/canopy.dat: terminal descent "
                     "velocity, breathing frequency, drag coefficients, "
-                    "coupling iterations; writes descentVelocity.png, "
-                    "projectedDiameter.png, summary.txt (also printed) and "
-                    "report.json.")
+                    "coupling iterations, the swing and the glide; writes "
+                    "descentVelocity.png, projectedDiameter.png, swing.png, "
+                    "summary.txt (also printed) and report.json.")
     p.add_argument("case", metavar="caseDir", help="the case directory")
     p.add_argument("--out", metavar="DIR",
                    help="output directory (default "

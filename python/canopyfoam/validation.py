@@ -1334,6 +1334,79 @@ RUNS += [ten("T10-skirt-cpd13-m163-w%g" % w, "163 kg on a guide wire, the "
 RUNS += [Run("T10-skirt-cpd13-default", T10, "the tutorial's default: the "
              "extended skirt, 100 kg, box 8 D0 wide, 13 cells across D0, to "
              "20 s", reference="T10")]
+# Free flight over a long window (issue 34 item 5): the suspension's angle
+# to the vertical, the swing's period and the glide, the T-10 at 13 cells
+# across D0 (its resolution study puts 11 outside 13 and 20) to 60 s,
+# read from 15 s (where the swing starts at 163 kg) to the end, the 7 ft
+# canopy at the main job's set-up to 15 s, read over 10-15 s. And the C-9 and the 1/3-scale G-11 in steady descent
+# (issue 34 item 6) on the guide wire, as the T-10's payload sweep, at 13
+# cells across D0 to 60 s, read over 30-60 s
+FREE_60 = [("system/controlDict", "endTime", "60")]
+CPD13 = ["-cellsPerDiameter", "13"]
+GUIDED = [(PROPS, "guideWire", "{ payload true; apex true; }")]
+RUNS += [
+    ten("T10-free-cpd13-m%d" % m, "%d kg in free flight, the extended "
+        "skirt, box 8 D0 wide, 13 cells across D0" % m, CPD13,
+        edits=[(PROPS, "payload/mass", "%d" % m)], guided=False, start=15,
+        end=60)
+    for m in (100, 163)
+] + [
+    Run("C9-cpd13-60s", "parachutes/C9", "100 kg on a guide wire, box 8 D0 "
+        "wide, 13 cells across D0, to 60 s; interval 30-60 s", CPD13,
+        GUIDED + FREE_60, reference="C9", steady_start=30, steady_end=60),
+    Run("G11-cpd13-60s", G11, "150 kg on a guide wire from the flat start, "
+        "box 8 D0 wide, 13 cells across D0, to 60 s; interval 30-60 s",
+        CPD13, GUIDED + FREE_60, reference="G11third", steady_start=30,
+        steady_end=60),
+    Run("7ft-default-free-15s", SEVEN, "the main job's set-up in free "
+        "flight (18 cells across D0) to 15 s; interval 10-15 s",
+        edits=FREE_FLIGHT + [("system/controlDict", "endTime", "15")],
+        reference="7ft", steady_start=10, steady_end=15),
+    # made by continuing 7ft-default-free-15s (its case directory copied,
+    # endTime set to 30, then run --continue)
+    Run("7ft-default-free-30s", SEVEN, "the main job's set-up in free "
+        "flight (18 cells across D0) to 30 s; interval 10-30 s",
+        edits=FREE_FLIGHT + [("system/controlDict", "endTime", "30")],
+        reference="7ft", steady_start=10, steady_end=30),
+]
+# What sets the T-10's departure from the vertical descent in free flight
+# (it grows as exp(rate t) from about 12 s at 163 kg): the same run to
+# 20 s with the coupling's tolerance a quarter, the time step half, 20
+# cells across D0, the WALE LES model with LUST convection, the
+# added-mass stabiliser's mass half, and the IB reaction's normal part
+# alone as the load. Read over 10-20 s; the growth rate
+# is fitted over the whole run (report.py, swing_growth)
+RUNS += [
+    ten("T10-free-cpd13-m163-20s", "163 kg in free flight, box 8 D0 wide, "
+        "13 cells across D0", CPD13, guided=False, start=10, end=20),
+    ten("T10-free-cpd13-m163-tol1.25e-3", "163 kg in free flight, 13 cells "
+        "across D0, coupling tolerance 1.25e-3 (a quarter), at most 60 "
+        "iterations", CPD13,
+        [(PROPS, "coupling/tolerance", "1.25e-3"),
+         ("system/fvSolution", "PIMPLE/nOuterCorrectors", "60")],
+        guided=False, start=10, end=20),
+    ten("T10-free-cpd13-m163-co0.25", "163 kg in free flight, 13 cells "
+        "across D0, maxCo 0.25 (maxDeltaT 0.025)", CPD13,
+        [("system/controlDict", "maxCo", "0.25"),
+         ("system/controlDict", "maxDeltaT", "0.025")],
+        guided=False, start=10, end=20),
+    ten("T10-free-cpd20-m163", "163 kg in free flight, box 8 D0 wide, 20 "
+        "cells across D0", ["-cellsPerDiameter", "20"], guided=False,
+        start=10, end=20),
+    ten("T10-free-cpd13-m163-LES", "163 kg in free flight, 13 cells across "
+        "D0, LES (WALE, LUST convection)", CPD13, LES, guided=False,
+        start=10, end=20),
+    ten("T10-free-cpd13-m163-normal", "163 kg in free flight, 13 cells "
+        "across D0, the IB reaction's normal part alone as the load, the "
+        "stabiliser along the normal", CPD13,
+        [(PROPS, "coupling/load/tangential", "false"),
+         (PROPS, "coupling/addedMass/direction", "normal")], guided=False,
+        start=10, end=20),
+    ten("T10-free-cpd13-m163-am1.35", "163 kg in free flight, 13 cells "
+        "across D0, the added-mass stabiliser's mass half (1.35 kg/m^2)",
+        CPD13, [(PROPS, "coupling/addedMass/mass", "1.35")], guided=False,
+        start=10, end=20),
+]
 RUN_BY_ID = {r.ident: r for r in RUNS}
 
 
@@ -1443,6 +1516,22 @@ STUDIES = [
      ["7ft-free", "7ft-free-cpd18"]),
     ("freeDescent7ft", "7 ft canopy in free flight: the swinging descent "
      "over 10-40 s (12 cells across D0)", ["7ft-free40"]),
+    ("departureT10", "T-10 at 163 kg in free flight: what sets the "
+     "departure from the vertical descent (13 cells across D0 unless said, "
+     "to 20 s, read over 10-20 s)",
+     ["T10-free-cpd13-m163-20s", "T10-free-cpd13-m163-tol1.25e-3",
+      "T10-free-cpd13-m163-co0.25", "T10-free-cpd20-m163",
+      "T10-free-cpd13-m163-LES", "T10-free-cpd13-m163-am1.35",
+      "T10-free-cpd13-m163-normal"]),
+    ("freeFlight", "The parachutes in free flight: the swing and the "
+     "glide (the T-10 at 13 cells across D0 to 60 s, read over 15-60 s; "
+     "the 7 ft canopy at the main job's set-up to 15 and 30 s, read from "
+     "10 s)",
+     ["7ft-default-free-15s", "7ft-default-free-30s", "T10-free-cpd13-m100",
+      "T10-free-cpd13-m163"]),
+    ("steadyLarge", "C-9 and 1/3-scale G-11 on a guide wire in steady "
+     "descent (13 cells across D0, to 60 s, read over 30-60 s)",
+     ["C9-cpd13-60s", "G11-cpd13-60s"]),
     ("timeStep7ft", "7 ft canopy: the time step (the main job: 18 cells "
      "across D0, the cloth without stiffness in compression, read over "
      "8-12 s)", ["7ft-default", "7ft-default-co0.25"]),
@@ -1939,6 +2028,12 @@ def record(run):
             analysis.pop(private, None)
         analysis["descentSeries"] = archive.thin_series(r["_series"].t,
                                                         r["_descent"])
+        # the suspension's angle over time where it swings (a run on the
+        # guide wire stays within a degree of the vertical)
+        if r["_angle"] is not None and \
+                np.max(r["_angle"]) > rep.SWING_ONSET_DEG:
+            analysis["swingSeries"] = archive.thin_series(r["_series"].t,
+                                                          r["_angle"])
     wall, ranks = wall_time(run.case_dir)
     rec = {"state": text, "complete": state == "complete",
            "codeVersion": run_code_version(run.case_dir), "wall": wall,
@@ -2001,6 +2096,85 @@ def breathing_band_lines(results):
             "", "| run | interval | band from [Hz] | frequency [Hz] | "
             "St = f Dp / V | amplitude [m] | periods in the interval |",
             "|---|---|---|---|---|---|---|"] + rows + [""]
+
+
+# Studies whose report gets the swing and glide table and the
+# suspension's angle over time (issue 34 item 5)
+SWING_STUDIES = ("freeFlight", "departureT10")
+
+# Published oscillation of each parachute's class: Knacke, Parachute
+# Recovery Systems Design Manual, NWC TP 6575 (1991), Table 5-1
+# (mediawiki.aerodecelerator.org, "Parachute Performance")
+PUBLISHED_OSCILLATION = {
+    "parachutes/flatCircular7ft": "flat circular, solid: ±10° to ±40°",
+    "parachutes/C9": "flat circular, solid: ±10° to ±40°",
+    "parachutes/T10": "extended skirt (10 % flat): ±10° to ±15°",
+    "parachutes/G11third": "flat circular, solid: ±10° to ±40°",
+    "parachutes/cross": "cross: 0° to ±3°",
+}
+
+
+def swing_lines(results):
+    """The table of each run's swing and glide (report.py's swing: the
+    suspension's angle over the interval, its period when resolved, the
+    payload's mean velocity across gravity) beside its class's published
+    oscillation, for the runs whose records hold them."""
+    rows = []
+    for run, rec in results:
+        a = rec and rec["analysis"]
+        sw = a and a.get("swing")
+        if not sw or "glide" not in sw:
+            continue
+        v = a["descentVelocity"]
+        gr = sw.get("growth")
+        D0 = a["parameters"]["nominalDiameter"]["value"]
+        # the departure's rate in the canopy's own time D0 / V, with V the
+        # descent where the fit's window starts
+        growth = "—" if not gr else "%.2f (%.2f s; %.2f) over %.3g-%.3g s" % (
+            gr["rate"], gr["doublingTime"] or float("inf"),
+            gr["rate"] * D0 / gr["descent"] if gr.get("descent") else
+            float("nan"), gr["start"], gr["end"])
+        rows.append("| %s | %s | %.3g-%.3g s | %.2f ± %.2f | %.3g | %s | "
+                    "%.1f / %.1f / %.1f | %s | %.2f (%.1f°) | %s | %s |" % (
+                        run.ident, rec["state"], a["steady"]["start"],
+                        a["steady"]["end"],
+                        v["mean"], v["ci95"] if v.get("ci95") else v["std"],
+                        a["dragCoefficient"]["weightBalance"], growth,
+                        sw["angleMax"], sw["angleMean"], sw["angleRms"],
+                        "%.3g s" % sw["period"] if sw["period"] else "—",
+                        sw["glide"]["speed"], sw["glide"]["angle"],
+                        "%.4g s" % sw["onset"] if sw["onset"] is not None
+                        else "never",
+                        PUBLISHED_OSCILLATION.get(run.tutorial, "—")))
+    if not rows:
+        return []
+    return ["The swing and the glide over each run's interval "
+            "(python/canopyfoam/report.py: the suspension's angle is that "
+            "of the canopy's centre seen from the payload, to the "
+            "vertical; the period is the spectral peak of that offset "
+            "across gravity; the glide is the payload's mean velocity "
+            "across gravity over the interval, which a swing about the "
+            "vertical averages out, and its angle atan(glide / descent); "
+            "'beyond 5°' is the first time the angle passes 5°; the "
+            "departure is the growth rate σ of the payload's speed across "
+            "gravity, fitted as exp(σ t) from 1 % to 20 % of the descent, "
+            "with its doubling time and σ D0 / V). The descent's ± is the "
+            "95 % interval of its mean from the series' integral time "
+            "(the std where the interval is too short); a failed run is "
+            "read over its interval up to where it stopped.", "",
+            "| run | state | interval | descent [m/s] | C_D0 | departure σ "
+            "[1/s] (doubling; σ D0/V) | angle max / mean / rms [°] | "
+            "period | glide [m/s] (angle) | beyond 5° from | published "
+            "oscillation (Knacke, Table 5-1) |",
+            "|---|---|---|---|---|---|---|---|---|---|---|"] + rows + [""]
+
+
+def plot_swing(name, title, runs_results):
+    """The suspension's angle to the vertical over time of the runs whose
+    records hold it; the figure's path relative to the report, or None."""
+    return plot_series(name + "-swing", title, runs_results, "swingSeries",
+                       "suspension's angle to the vertical [°]",
+                       label=lambda run: run.ident, title_size=9)
 
 
 def shape_lines(results):
@@ -2626,6 +2800,17 @@ def converged(study):
 
 
 def plot_study(name, title, runs_results, reference_lines=()):
+    """Each run's descent speed over time, with reference lines."""
+    return plot_series(name, title, runs_results, "descentSeries",
+                       "descent speed [m/s]", reference_lines)
+
+
+def plot_series(name, title, runs_results, key, ylabel, reference_lines=(),
+                label=lambda run: run.label, title_size=None):
+    """One series of the records' analyses (key: descentSeries or
+    swingSeries) against time for each run that holds it, in
+    FIG_DIR/name.png; its path relative to the report, or None when no run
+    has it."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -2633,19 +2818,22 @@ def plot_study(name, title, runs_results, reference_lines=()):
     fig, ax = plt.subplots(figsize=(8, 4.5))
     drawn = 0
     for run, rec in runs_results:
-        if rec is None or rec["analysis"] is None:
+        series = rec and rec["analysis"] and rec["analysis"].get(key)
+        if not series:
             continue
-        series = rec["analysis"]["descentSeries"]
-        ax.plot(series["t"], series["v"], lw=1.1, label=run.label)
+        ax.plot(series["t"], series["v"], lw=1.1, label=label(run))
         drawn += 1
-    for value, label, style in reference_lines:
-        ax.axhline(value, color="k", ls=style, lw=1, label=label)
+    for value, text, style in reference_lines:
+        ax.axhline(value, color="k", ls=style, lw=1, label=text)
     if not drawn:
         plt.close(fig)
         return None
     ax.set_xlabel("time [s]")
-    ax.set_ylabel("descent speed [m/s]")
-    ax.set_title(title)
+    ax.set_ylabel(ylabel)
+    if title_size is None:
+        ax.set_title(title)
+    else:
+        ax.set_title(title, fontsize=title_size)
     ax.grid(True, alpha=0.3)
     ax.legend(loc="best", fontsize=8)
     fig.tight_layout()
@@ -3691,6 +3879,103 @@ def write_report():
             md += shape_lines(results)
         if name in BREATHING_STUDIES:
             md += breathing_band_lines(results)
+        if name in SWING_STUDIES:
+            md += swing_lines(results)
+            swing_fig = plot_swing(name, title, results)
+            if swing_fig:
+                md += ["![%s: the suspension's angle](%s)" % (title,
+                                                            swing_fig), ""]
+        if name == "departureT10":
+            md += ["In free flight the T-10 leaves its vertical descent "
+                   "after about 10 s at 163 kg: the payload's speed across "
+                   "gravity grows as exp(σ t) with σ = 0.96 /s (doubling "
+                   "in 0.72 s), σ D0 / V = 1.54; at 100 kg "
+                   "(T10-free-cpd13-m100, study freeFlight) 0.78 /s, σ D0 "
+                   "/ V = 1.58: the same rate in the canopy's own time "
+                   "D0 / V. It departs as a glide: while the payload "
+                   "reaches 5-10 m/s across gravity the suspension stays "
+                   "within about 8° of the vertical (mean 7.8° over "
+                   "10-20 s, the glide 30° from the vertical), so the "
+                   "canopy's force leans into the relative wind, as a "
+                   "statically unstable canopy's does (its normal force "
+                   "falling with the angle of attack near zero, so that it "
+                   "trims at an angle); then it swings out to 30-40°.",
+                   "",
+                   "The departure is not the numerics': the coupling's "
+                   "tolerance a quarter gives σ = 0.98 /s, half the time "
+                   "step 0.83, 20 cells across D0 0.82, the WALE LES "
+                   "model 1.03; all depart and glide. Half the added-mass "
+                   "stabiliser's mass gives 1.21 /s: a stabiliser balanced "
+                   "at the coupling's tolerance moves the rate by a fifth, "
+                   "the largest numerical effect found, and it damps (a "
+                   "heavier stabiliser, a slower departure). The normal "
+                   "load alone (tangential false, the stabiliser along the "
+                   "normal) stopped at 4.8 s, before any departure, a "
+                   "cloth node past 100 m/s, so it cannot tell whether the "
+                   "tangential load drives the departure.", "",
+                   "Published: extended-skirt canopies oscillate by ±10° to "
+                   "±15° (Knacke, NWC TP 6575, Table 5-1); no source found "
+                   "reports a T-10 that glides off or tumbles. The model's "
+                   "departure is a finding against that, not yet "
+                   "explained. What the model leaves out that would "
+                   "stabilise it: the vent (0.1 D0 assumed, about one cell "
+                   "at 13 cells across D0 and effectively closed; at 20 "
+                   "cells about two, σ 15 % lower), the canopy's effective "
+                   "porosity beyond the cloth's (the cloth's ~1.6 % of V "
+                   "at q ≈ 27 Pa is all the model has; Knacke's stable "
+                   "canopies have more), the anti-inversion net and the "
+                   "jumper's own drag.", ""]
+        if name == "freeFlight":
+            md += ["The 7 ft canopy at the main job's set-up (18 cells "
+                   "across D0, the cloth without stiffness in compression) "
+                   "leaves the vertical from about 3 s (σ = 1.99 /s, σ D0 "
+                   "/ V = 0.70), overshoots to 59° at 6.9 s and then settles "
+                   "into a bounded swing: over 10-30 s the suspension's "
+                   "angle is at most 25.6° (mean 10.3°, rms 11.5°), with a "
+                   "period of 2.99 s and no glide (the payload's mean "
+                   "velocity across gravity 0.06 m/s); it descends at 5.79 "
+                   "± 0.11 m/s, C_D0 0.778, Dp/D0 0.78 (silhouette 0.72). "
+                   "Published solid flat circular canopies: oscillation "
+                   "±10° to ±40°, C_D0 0.75-0.80 (Knacke, NWC TP 6575, "
+                   "Table 5-1): the swing and the drag lie inside those "
+                   "ranges. On the guide wire the same set-up gives 6.17 ± "
+                   "0.03 m/s and C_D0 0.685 over 8-12 s (7ft-default): the "
+                   "free canopy swinging about the vertical drags 14 % "
+                   "more. The period is nearly a simple pendulum's: 2π "
+                   "(L/g)^½ = 3.08 s for the payload's mean distance from "
+                   "the canopy's centre, L = 2.35 m (3 % longer).", "",
+                   "The T-10 (13 cells across D0) does not settle: it "
+                   "departs at σ D0 / V ≈ 1.5 (study departureT10), glides "
+                   "and swings to 30-40°, and passes 60° at 28.6 s (163 "
+                   "kg) and 32.2 s (100 kg), after which the payload "
+                   "whirls at up to 34-39 m/s across gravity until the "
+                   "canopy, below the payload's level, leaves the finest "
+                   "refinement and a cloth node passes 100 m/s (32.5 and "
+                   "33.8 s). Nothing in the published record of the T-10 "
+                   "or of extended-skirt canopies (±10° to ±15°, Knacke "
+                   "Table 5-1) matches that. The 7 ft case's payload is "
+                   "heavy for its canopy (m / ρ D0³ = 0.46) and the T-10's "
+                   "light (0.11 at 163 kg, 0.07 at 100 kg): with the air "
+                   "moving with the canopy (about ρ π Dp³ / 12, 150 kg for "
+                   "the T-10) comparable to the payload the pendulum's "
+                   "restoring moment is weaker, which may be why one "
+                   "settles and the other does not; not shown yet.", ""]
+        if name == "steadyLarge":
+            md += ["The C-9 (28 ft flat circular, 100 kg) on the guide "
+                   "wire descends at 5.75 ± 0.07 m/s over 30-60 s, still "
+                   "slowing by 0.18 m/s over the interval: C_D0 0.904, "
+                   "projected diameter 0.90 D0 (silhouette 0.84 D0), "
+                   "against the handbook's 0.75-0.80 and 0.67-0.70 for "
+                   "solid flat circular canopies (Knacke, NWC TP 6575, "
+                   "Table 5-1), which would give 6.1-6.3 m/s with its "
+                   "104.5 kg: the model's C-9 opens wider and drags 13-21 "
+                   "% more. The 1/3-scale G-11 (150 kg, from the flat "
+                   "start) does not reach a steady descent in 60 s: 6.9 "
+                   "m/s at 30-33 s, 5.7 m/s at 60 s (6.31 ± 0.33 m/s over "
+                   "30-60 s, C_D0 0.80, projected diameter 0.84 D0, "
+                   "silhouette 0.77 D0). Both at one resolution (13 cells "
+                   "across D0): no GCI; the T-10's resolution study "
+                   "(resolutionT10Skirt) is the only large canopy's.", ""]
         if name == "domainT10SkirtLong":
             md += ["At 13 cells across D0 in steady descent (50-80 s) the "
                    "box's width moves C_D0 from 0.709 (5.6 D0) to 0.690 "

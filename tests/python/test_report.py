@@ -570,10 +570,49 @@ def test_swing(tmp):
              / (math.factorial(k) * math.factorial(k + 1)) for k in range(8))
     close("swing: amplitude of the offset's fundamental", sw["amplitude"],
           2 * length * j1, 0.015 * 2 * length * j1, "m")
+    # |theta| has its kinks on samples (t = 0, 2, 4 ... s), where the
+    # trapezoidal rule's error is of order h^2: measured 1.3e-4 deg
+    close("swing: mean angle (2/pi of the amplitude)", sw["angleMean"],
+          20.0 / math.pi, 1e-3, "deg")
+    # 10 deg sin(pi t / 2) passes 5 deg at t = 1/3 s: the first sample
+    # beyond it is 0.34 s
+    close("swing: first time beyond 5 deg",
+          report.swing_onset(t, np.degrees(theta)), 0.34, 1e-9, "s")
     nan = np.full_like(offset, np.nan)
     check("no swing without the canopy's centre",
           report.suspension_swing(t, nan, np.array([0.0, 0.0, -1.0]))
           is None, "None")
+
+
+def test_departure_and_glide():
+    """The glide: the payload moving at 1.5 m/s along x and 5 m/s down,
+    with a swing of 0.4 m/s amplitude along y over whole periods (12 s at
+    0.25 Hz): the mean velocity across gravity is 1.5 m/s along x (the
+    swing averages out; trapezoidal rule exact for whole periods, so
+    1e-9) at atan(1.5/5) = 16.699 deg. The departure: H = 1e-4 exp(0.9 t)
+    m/s at a steady 5 m/s descent: the fit over H/V from 0.01 to 0.2 is
+    exact for a pure exponential (1e-9 of the rate), its window from the
+    last sample below 0.05 m/s (t = 6.90 s) to the first above 1 m/s
+    (10.24 s); a series that stays below 20 % of the descent gives none;
+    a wrong window (the whole run) or the log's slope taken on H itself
+    would differ by far more."""
+    import numpy as np
+    t = np.arange(0, 12.0 + 1e-9, 0.01)
+    down = np.array([0.0, 0.0, -1.0])
+    velocity = np.stack([1.5 + 0 * t, 0.4 * np.sin(2 * math.pi * 0.25 * t),
+                         -5.0 + 0 * t], axis=1)
+    g = report.glide(t, velocity, down, 5.0)
+    close("glide: mean speed across gravity", g["speed"], 1.5, 1e-9, "m/s")
+    close("glide: angle from the vertical", g["angle"],
+          math.degrees(math.atan2(1.5, 5.0)), 1e-9, "deg")
+    H = 1e-4 * np.exp(0.9 * t)
+    V = 5.0 + 0 * t
+    gr = report.swing_growth(t, H, V)
+    close("departure: growth rate", gr["rate"], 0.9, 0.9e-9, "1/s")
+    close("departure: window start", gr["start"], 6.90, 1e-9, "s")
+    close("departure: window end", gr["end"], 10.24, 1e-9, "s")
+    check("no departure below 20 % of the descent",
+          report.swing_growth(t, 0.19 * V * H / H.max(), V) is None, "None")
 
 
 def main():
@@ -589,6 +628,7 @@ def main():
         test_references(tmp, case)
         test_mean_confidence(tmp)
         test_swing(tmp)
+        test_departure_and_glide()
     return run_checks(tmp, body, "report")
 
 
