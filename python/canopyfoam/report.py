@@ -673,6 +673,31 @@ def swing_growth(t, horizontal, descent, low=SWING_GROWTH_LOW,
             "low": low, "high": high}
 
 
+def _angle_between(a, b):
+    """Row-wise angle between the vectors of a and b (n x 3) [degrees]."""
+    na = np.linalg.norm(a, axis=1)
+    nb = np.linalg.norm(b, axis=1)
+    c = np.sum(a * b, axis=1) / np.maximum(na * nb, 1e-300)
+    return np.degrees(np.arccos(np.clip(c, -1.0, 1.0)))
+
+
+def incidence(t, offset, velocity, force):
+    """The canopy's incidence over the interval, in still air: the angle
+    between its axis (the payload-to-canopy offset, n x 3) and the relative
+    wind on the payload (minus its velocity), and the angle between the
+    canopy's pressure force and its axis (zero for a canopy whose force is
+    all along its axis, whose lift across the wind is then its drag times
+    tan(incidence)). Time-weighted means and the largest values
+    [degrees]."""
+    a = _angle_between(offset, -np.asarray(velocity, dtype=float))
+    f = _angle_between(force, offset)
+    w = trapezoid_weights(t)
+    return {"incidenceMean": float(np.sum(w * a) / np.sum(w)),
+            "incidenceMax": float(np.max(a)),
+            "forceOffAxisMean": float(np.sum(w * f) / np.sum(w)),
+            "forceOffAxisMax": float(np.max(f))}
+
+
 def glide(t, velocity, ghat, speed):
     """The interval's glide: the payload's mean velocity across gravity
     (a swing about the vertical averages out, a glide does not), its
@@ -780,6 +805,9 @@ def analyse(case_dir, fraction=None, steady_start=None, diameter=None,
         swing["glide"] = glide(ts, np.asarray(U, dtype=float)[m], ghat,
                                v_stats["mean"])
         swing["growth"] = swing_growth(t, H, V)
+        swing.update(incidence(ts, offset[m], np.asarray(U, dtype=float)[m],
+                               series.columns("force_x", "force_y",
+                                              "force_z")[m]))
     cd = drag_coefficients(v_stats["mean"], f_stats["mean"],
                            params["totalMass"][0], g,
                            params["rho"][0], D0)
@@ -1005,6 +1033,12 @@ def format_summary(r):
                                                    sw["onset"])
                     if sw["onset"] is not None else
                     "never beyond %g deg" % sw["onsetThreshold"]))
+        if "incidenceMean" in sw:
+            add("  incidence    the relative wind at %.3g deg to the canopy's "
+                "axis on average (at most %.3g; still air); the canopy's "
+                "force %.3g deg off its axis on average (at most %.3g)" % (
+                    sw["incidenceMean"], sw["incidenceMax"],
+                    sw["forceOffAxisMean"], sw["forceOffAxisMax"]))
         gr = sw.get("growth")
         if gr:
             add("  departure    the speed across gravity grows as exp(%.3g "

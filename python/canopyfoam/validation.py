@@ -2134,8 +2134,13 @@ def swing_lines(results):
             gr["rate"], gr["doublingTime"] or float("inf"),
             gr["rate"] * D0 / gr["descent"] if gr.get("descent") else
             float("nan"), gr["start"], gr["end"])
+        inc = ("%.0f / %.0f° (%.1f°)" % (sw["incidenceMean"],
+                                          sw["incidenceMax"],
+                                          sw["forceOffAxisMean"])
+               if "incidenceMean" in sw else "—")
         rows.append("| %s | %s | %.3g-%.3g s | %.2f ± %.2f | %.3g | %s | "
-                    "%.1f / %.1f / %.1f | %s | %.2f (%.1f°) | %s | %s |" % (
+                    "%.1f / %.1f / %.1f | %s | %.2f (%.1f°) | %s | %s | %s |"
+                    % (
                         run.ident, rec["state"], a["steady"]["start"],
                         a["steady"]["end"],
                         v["mean"], v["ci95"] if v.get("ci95") else v["std"],
@@ -2144,7 +2149,7 @@ def swing_lines(results):
                         "%.3g s" % sw["period"] if sw["period"] else "—",
                         sw["glide"]["speed"], sw["glide"]["angle"],
                         "%.4g s" % sw["onset"] if sw["onset"] is not None
-                        else "never",
+                        else "never", inc,
                         PUBLISHED_OSCILLATION.get(run.tutorial, "—")))
     if not rows:
         return []
@@ -2158,15 +2163,19 @@ def swing_lines(results):
             "'beyond 5°' is the first time the angle passes 5°; the "
             "departure is the growth rate σ of the payload's speed across "
             "gravity, fitted as exp(σ t) from 1 % to 20 % of the descent, "
-            "with its doubling time and σ D0 / V). The descent's ± is the "
-            "95 % interval of its mean from the series' integral time "
+            "with its doubling time and σ D0 / V; the incidence is the "
+            "angle between the canopy's axis, payload to canopy, and the "
+            "relative wind in still air, mean / largest, with the mean "
+            "angle of the canopy's force off that axis). The descent's ± "
+            "is the 95 % interval of its mean from the series' integral time "
             "(the std where the interval is too short); a failed run is "
             "read over its interval up to where it stopped.", "",
             "| run | state | interval | descent [m/s] | C_D0 | departure σ "
             "[1/s] (doubling; σ D0/V) | angle max / mean / rms [°] | "
-            "period | glide [m/s] (angle) | beyond 5° from | published "
-            "oscillation (Knacke, Table 5-1) |",
-            "|---|---|---|---|---|---|---|---|---|---|---|"] + rows + [""]
+            "period | glide [m/s] (angle) | beyond 5° from | incidence "
+            "(force off axis) | published oscillation (Knacke, Table 5-1) |",
+            "|---|---|---|---|---|---|---|---|---|---|---|---|"] + rows + [
+                ""]
 
 
 def plot_swing(name, title, runs_results):
@@ -3900,6 +3909,25 @@ def write_report():
                    "statically unstable canopy's does (its normal force "
                    "falling with the angle of attack near zero, so that it "
                    "trims at an angle); then it swings out to 30-40°.",
+                   "",
+                   "What it lacks is a normal force: over 10-20 s the "
+                   "relative wind meets the T-10's axis at 28° on average "
+                   "(up to 73°) while the canopy's force stays 0.9° off "
+                   "that axis on average (at most 3.6°; at 20 cells 3.3° "
+                   "and 8.8° at 35° and up to 79°; table above), so "
+                   "the force's lift across the wind is its drag times "
+                   "tan(incidence) and nothing turns the axis back into "
+                   "the wind: the force, nearly along the suspension, "
+                   "passes close to the payload and the system's centre "
+                   "of mass and has little moment about them. A canopy with a normal "
+                   "force pushing it downwind at incidence (a negative "
+                   "slope of the pitching moment) swings about a trim "
+                   "angle instead. The 7 ft canopy, which settles, has its "
+                   "force 2.7° off its axis on average (at most 7.5°) at "
+                   "17° mean incidence (at most 35°) over 10-30 s. "
+                   "The next measurement is the canopy's normal force "
+                   "against incidence, the canopy held in a tilted stream, "
+                   "against published moment and normal-force curves.",
                    "",
                    "The departure is not the numerics': the coupling's "
                    "tolerance a quarter gives σ = 0.98 /s, half the time "

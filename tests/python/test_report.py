@@ -595,7 +595,9 @@ def test_departure_and_glide():
     last sample below 0.05 m/s (t = 6.90 s) to the first above 1 m/s
     (10.24 s); a series that stays below 20 % of the descent gives none;
     a wrong window (the whole run) or the log's slope taken on H itself
-    would differ by far more."""
+    would differ by far more. The incidence: the canopy straight above
+    the payload, the relative wind 30 deg off its axis and the force 5
+    deg off it (exact to 1e-9)."""
     import numpy as np
     t = np.arange(0, 12.0 + 1e-9, 0.01)
     down = np.array([0.0, 0.0, -1.0])
@@ -611,6 +613,19 @@ def test_departure_and_glide():
     close("departure: growth rate", gr["rate"], 0.9, 0.9e-9, "1/s")
     close("departure: window start", gr["start"], 6.90, 1e-9, "s")
     close("departure: window end", gr["end"], 10.24, 1e-9, "s")
+    # the canopy straight above the payload, the relative wind 30 deg off
+    # the vertical, the force 5 deg off the axis: exact angles (1e-9)
+    n = len(t)
+    axis = np.tile([0.0, 0.0, 2.0], (n, 1))
+    a = math.radians(30.0)
+    falling = np.tile([-5.0 * math.sin(a), 0.0, -5.0 * math.cos(a)], (n, 1))
+    b = math.radians(5.0)
+    force = np.tile([0.0, 100.0 * math.sin(b), 100.0 * math.cos(b)], (n, 1))
+    inc = report.incidence(t, axis, falling, force)
+    close("incidence: relative wind to the axis", inc["incidenceMean"], 30.0,
+          1e-9, "deg")
+    close("incidence: force off the axis", inc["forceOffAxisMax"], 5.0,
+          1e-9, "deg")
     check("no departure below 20 % of the descent",
           report.swing_growth(t, 0.19 * V * H / H.max(), V) is None, "None")
 
