@@ -3904,11 +3904,10 @@ def write_report():
                    "D0 / V. It departs as a glide: while the payload "
                    "reaches 5-10 m/s across gravity the suspension stays "
                    "within about 8° of the vertical (mean 7.8° over "
-                   "10-20 s, the glide 30° from the vertical), so the "
-                   "canopy's force leans into the relative wind, as a "
-                   "statically unstable canopy's does (its normal force "
-                   "falling with the angle of attack near zero, so that it "
-                   "trims at an angle); then it swings out to 30-40°.",
+                   "10-20 s, the glide 30° from the vertical): the canopy's "
+                   "axis stays near the vertical while the relative wind "
+                   "tilts, instead of turning into the wind; then it swings "
+                   "out to 30-40°.",
                    "",
                    "What it lacks is a normal force: over 10-20 s the "
                    "relative wind meets the T-10's axis at 28° on average "
