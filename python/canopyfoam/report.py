@@ -685,7 +685,7 @@ def incidence(t, offset, velocity, force):
     """The canopy's incidence over the interval, in still air: the angle
     between its axis (the payload-to-canopy offset, n x 3) and the relative
     wind on the payload (minus its velocity), and the angle between the
-    canopy's pressure force and its axis (zero for a canopy whose force is
+    canopy's load (canopy.dat's force) and its axis (zero for a canopy whose force is
     all along its axis, whose lift across the wind is then its drag times
     tan(incidence)). Time-weighted means and the largest values
     [degrees]."""
