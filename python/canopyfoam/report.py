@@ -57,6 +57,7 @@ import sys
 import numpy as np
 
 from . import shape as canopy_shape
+from . import load_moment
 
 COLUMNS = (
     "time",
@@ -742,6 +743,32 @@ def suspension_swing(t, offset, ghat):
             "note": peak["note"]}
 
 
+def canopy_load(case_dir, t, force, t0, t1):
+    """The load on the cloth over the interval: its time-weighted mean
+    vector [N] with each component's standard deviation and the mean's 95
+    % interval (mean_confidence; None where not estimated), and its moment
+    about the payload [N m] (load_moment.py), the mean and standard
+    deviation over the states canopy.h5 holds in the interval (moment None
+    with a note when they cannot be read)."""
+    force = np.asarray(force, dtype=float)
+    out = {"force": [], "forceStd": [], "forceCi95": []}
+    for k in range(3):
+        stats = time_statistics(t, force[:, k])
+        out["force"].append(stats["mean"])
+        out["forceStd"].append(stats["std"])
+        out["forceCi95"].append(mean_confidence(t, force[:, k])[0])
+    try:
+        moment = load_moment.analyse(case_dir, t0, t1)
+    except load_moment.LoadMomentError as e:
+        out.update(moment=None, momentNote=str(e))
+        return out
+    out.update(moment=moment["momentMean"],
+               momentStd=[float(v) for v in np.std(moment["moment"],
+                                                   axis=0)],
+               momentStates=moment["states"])
+    return out
+
+
 def drag_coefficients(speed, drag_force, mass, gravity, rho, diameter):
     """C_D = W / (q S0) and C_D = drag / (q S0), q = rho V^2 / 2."""
     g = float(np.linalg.norm(gravity))
@@ -815,6 +842,9 @@ def analyse(case_dir, fraction=None, steady_start=None, diameter=None,
         form = dict(canopy_shape.analyse(case_dir, t0, t1), available=True)
     except canopy_shape.ShapeError as e:
         form = {"available": False, "note": str(e)}
+    load = canopy_load(case_dir, ts,
+                       series.columns("force_x", "force_y", "force_z")[m],
+                       t0, t1)
     steady_warning = ""
     if abs(v_stats["drift"]) > max(2.0 * v_stats["std"],
                                    0.01 * abs(v_stats["mean"])):
@@ -845,6 +875,7 @@ def analyse(case_dir, fraction=None, steady_start=None, diameter=None,
         "horizontalVelocity": h_stats,
         "projectedDiameter": d_stats,
         "pressureForceAgainstGravity": f_stats,
+        "canopyLoad": load,
         "breathing": {k: v for k, v in b.items() if not k.startswith("_")},
         "breathingBand": b_band,
         "swing": swing,
@@ -1046,6 +1077,14 @@ def format_summary(r):
                 "the descent)" % (gr["rate"], gr["doublingTime"] or
                                   float("inf"), gr["start"], gr["end"],
                                   gr["low"], gr["high"]))
+    load = r.get("canopyLoad")
+    if load:
+        add("  load         on the cloth (%s) N mean over the interval%s" % (
+            " ".join("%.4g" % x for x in load["force"]),
+            "; its moment about the payload (%s) N m (mean of %d written "
+            "states)" % (" ".join("%.4g" % x for x in load["moment"]),
+                         load["momentStates"]) if load.get("moment")
+            else " (moment not read: %s)" % load.get("momentNote", "")))
     add("  diameter     %.4g m = %.3f D0  std %.3g  min %.4g  max %.4g"
         % (d["mean"], d["mean"] / D0, d["std"], d["min"], d["max"]))
     add(shape_summary(r.get("shape"), D0))

@@ -5,9 +5,10 @@ dictionary entries changed (foamDictionary -set) and some options given to
 its Allrun; its Allrun writes postProcessing/report/report.json
 (bin/canopy-report). A study groups runs and says what they are compared
 with. `run` does the runs that have no complete result yet (a run is
-complete when its solver log ends with "End" and its report.json exists);
-`report` reads the runs and writes the markdown and the plots; a run that
-failed is listed as such.
+complete when its solver log ends with "End" and its report.json exists),
+then removes the field writes its report does not read (slim_case; `run
+--keep-fields` keeps them); `report` reads the runs and writes the
+markdown and the plots; a run that failed is listed as such.
 
 Every run read is recorded in docs/validation/runs/<run id>.json
 (validation_archive.py), which is committed: a run that is not in
@@ -33,6 +34,7 @@ import time
 import numpy as np
 
 from . import report as rep
+from . import rest_state
 from . import validation_archive as archive
 
 TOP = os.path.dirname(os.path.dirname(os.path.dirname(
@@ -45,11 +47,15 @@ ARCHIVE_DIR = os.path.join(FIG_DIR, "runs")
 
 class Run:
     """One tutorial variant: tutorial path under tutorials/, Allrun options,
-    and (dictionary file, entry path, value) edits."""
+    and (dictionary file, entry path, value) edits; rest_state_of: the id
+    of a run whose last canopy state, at rest (rest_state.py), this run
+    starts from (REST_STATE; its edits name it as initialState)."""
 
     def __init__(self, ident, tutorial, label, options=(), edits=(),
-                 reference=None, steady_start=None, steady_end=None):
+                 reference=None, steady_start=None, steady_end=None,
+                 rest_state_of=None):
         self.ident = ident
+        self.rest_state_of = rest_state_of
         self.tutorial = tutorial
         self.label = label
         self.options = list(options)
@@ -1240,13 +1246,14 @@ RUNS += [
 ]
 
 
-def ten(ident, label, options=(), edits=(), guided=True, start=30, end=50):
+def ten(ident, label, options=(), edits=(), guided=True, start=30, end=50,
+        rest_state_of=None):
     """A run of the T-10 tutorial at its rated 163 kg to 50 s (about 28
     D0/V: at 20 s the tutorial's run still creeps faster as its wake
     grows), read over 30-50 s (or start-end); guided: the payload and the
     canopy's apex (the cloth node nearest the vent's centre) on a vertical
     guide wire, as the 7 ft drop test was, so that the drag is measured in
-    an axisymmetric descent."""
+    an axisymmetric descent; rest_state_of: see Run."""
     wire = [(PROPS, "guideWire", "{ payload true; apex true; }")] \
         if guided else []
     return Run(ident, T10, label + ", to %g s; interval %g-%g s"
@@ -1254,7 +1261,8 @@ def ten(ident, label, options=(), edits=(), guided=True, start=30, end=50):
                [(PROPS, "payload/mass", "163"),
                 ("system/controlDict", "endTime", "%g" % end)] + wire
                + list(edits),
-               reference="T10", steady_start=start, steady_end=end)
+               reference="T10", steady_start=start, steady_end=end,
+               rest_state_of=rest_state_of)
 
 
 # The T-10 at 163 kg in free flight: from about 20 s it swings, and the
@@ -1408,6 +1416,123 @@ RUNS += [
         CPD13, [(PROPS, "coupling/addedMass/mass", "1.35")], guided=False,
         start=10, end=20),
 ]
+# The canopy's force at incidence, the fluid side alone: a run's inflated
+# canopy (its last state, rest_state.py) held still (every node fixed, the
+# frame fixed) in a uniform stream of the speed that run descended at,
+# tilted by alpha from the canopy's axis (the stream enters through the
+# inlet and the sides). Per angle: the force along the axis and across it,
+# and its moment about the payload (where the lines meet), so the angle at
+# which the moment vanishes is the trim the parachute swings about
+# (tilt_table). T-10: T10-skirt-cpd13-m163's state at 80 s (6.66 m/s), to
+# 30 s (19 D0/V), read over 15-30 s
+REST_STATE = "constant/restState.h5"
+
+
+def tilted_stream(speed, alpha):
+    """Edits that hold the case's canopy still in a stream of speed [m/s]
+    at alpha [degrees] from the axis (+z), across it along +x."""
+    a = math.radians(alpha)
+    stream = "uniform (%.6g 0 %.6g)" % (speed * math.sin(a),
+                                        speed * math.cos(a))
+    return [(PROPS, "fixedNodes", "{ all true; }"),
+            (PROPS, "coupling/frame", "{ type fixed; }"),
+            (PROPS, "initialState", '"%s"' % REST_STATE),
+            ("0.orig/U", "internalField", stream),
+            ("0.orig/U", "boundaryField/inlet/value", stream)] + [
+            ("0.orig/U", "boundaryField/%s/%s" % (patch, entry), stream)
+            for patch in ("sides", "outlet") for entry in ("inletValue",
+                                                            "value")]
+
+
+TILT_ANGLES = (0, 10, 20, 30, 45)
+TILT_T10_SPEED = 6.66
+RUNS += [
+    Run("T10-tilt%d" % a, T10, "the extended skirt's inflated shape "
+        "(T10-skirt-cpd13-m163 at 80 s) held in a %g m/s stream at %d deg "
+        "to its axis, 13 cells across D0, to 30 s; interval 15-30 s"
+        % (TILT_T10_SPEED, a), CPD13,
+        tilted_stream(TILT_T10_SPEED, a)
+        + [("system/controlDict", "endTime", "30")], reference="T10",
+        steady_start=15, steady_end=30, rest_state_of="T10-skirt-cpd13-m163")
+    for a in TILT_ANGLES
+]
+# The resolution's effect at 30°: the same held at 20 cells across D0, from
+# the 20-cell guided run's last state (T10-skirt-cpd20 at 50 s), in the
+# same stream
+RUNS += [
+    Run("T10-tilt30-cpd20", T10, "the extended skirt's inflated shape "
+        "(T10-skirt-cpd20 at 50 s) held in a %g m/s stream at 30 deg to its "
+        "axis, 20 cells across D0, to 30 s; interval 15-30 s"
+        % TILT_T10_SPEED, ["-cellsPerDiameter", "20"],
+        tilted_stream(TILT_T10_SPEED, 30)
+        + [("system/controlDict", "endTime", "30")], reference="T10",
+        steady_start=15, steady_end=30, rest_state_of="T10-skirt-cpd20")
+]
+# 7 ft flat circular: the main job's set-up's state at 40 s (7ft-default-40s,
+# 6.22 m/s), the guide wire's apex off (every node is fixed), to 8 s (23
+# D0/V), read over 4-8 s
+TILT_SEVEN_SPEED = 6.22
+RUNS += [
+    Run("7ft-tilt%d" % a, SEVEN, "the main job's inflated shape "
+        "(7ft-default-40s at 40 s) held in a %g m/s stream at %d deg to its "
+        "axis, 18 cells across D0, to 8 s; interval 4-8 s"
+        % (TILT_SEVEN_SPEED, a), [],
+        [(PROPS, "guideWire/apex", "false")]
+        + tilted_stream(TILT_SEVEN_SPEED, a)
+        + [("system/controlDict", "endTime", "8")], reference="7ft",
+        steady_start=4, steady_end=8, rest_state_of="7ft-default-40s")
+    for a in TILT_ANGLES
+]
+# The T-10 at incidence with its cloth free: T10-skirt-cpd13-m163's state
+# at 80 s, every node given its descent (initialVelocity), on the guide
+# wire (payload and apex on a vertical line, so the axis stays vertical)
+# in a steady horizontal wind W = V tan(alpha) for the angle alpha at the
+# 6.66 m/s it descends at: the relative wind meets the axis at
+# atan(W / V) for the descent V the run settles at, and the cloth takes
+# whatever shape that incidence gives it. To 30 s, read over 15-30 s
+CROSSWIND_ANGLES = (0, 10, 20, 30)
+CROSSWIND_T10 = {"T10-crosswind%d" % a:
+                 TILT_T10_SPEED * math.tan(math.radians(a))
+                 for a in CROSSWIND_ANGLES}
+RUNS += [
+    ten(ident, "the extended skirt on the guide wire from its inflated "
+        "state (T10-skirt-cpd13-m163 at 80 s) in a %.3g m/s horizontal "
+        "wind, 13 cells across D0" % wind, CPD13,
+        [(PROPS, "initialState", '"%s"' % REST_STATE),
+         (PROPS, "initialVelocity", "(0 0 %g)" % -TILT_T10_SPEED),
+         (PROPS, "coupling/frame/wind", "(%.6g 0 0)" % wind),
+         ("0.orig/U", "internalField", "uniform (%.6g 0 %g)"
+          % (wind, TILT_T10_SPEED))],
+        start=15, end=30, rest_state_of="T10-skirt-cpd13-m163")
+    for ident, wind in sorted(CROSSWIND_T10.items())
+]
+# The same start with the payload alone on the guide wire: the canopy may
+# turn about the payload (where its lines meet) but the payload cannot
+# swing, so the system's pendulum motion is gone and what is left is the
+# canopy's own rotation under its moment about the payload: in still air
+# (does the vertical descent depart without the payload's swing?) and in
+# the 20° wind (where does the axis settle: at the trim the moment gives)
+PIVOT = [(PROPS, "guideWire", "{ payload true; apex false; }")]
+RUNS += [
+    ten("T10-pivot-crosswind%d" % a, "the extended skirt from its inflated "
+        "state (T10-skirt-cpd13-m163 at 80 s), the payload alone on the "
+        "guide wire, in a %.3g m/s horizontal wind, 13 cells across D0"
+        % CROSSWIND_T10["T10-crosswind%d" % a], CPD13,
+        [(PROPS, "initialState", '"%s"' % REST_STATE),
+         (PROPS, "initialVelocity", "(0 0 %g)" % -TILT_T10_SPEED),
+         (PROPS, "coupling/frame/wind", "(%.6g 0 0)"
+          % CROSSWIND_T10["T10-crosswind%d" % a]),
+         ("0.orig/U", "internalField", "uniform (%.6g 0 %g)"
+          % (CROSSWIND_T10["T10-crosswind%d" % a], TILT_T10_SPEED))]
+        + PIVOT, guided=False, start=15, end=30,
+        rest_state_of="T10-skirt-cpd13-m163")
+    for a in (0, 20)
+]
+# Each held run's stream: (speed [m/s], angle to the axis [degrees])
+TILT_STREAM = {"%s-tilt%d" % (name, a): (speed, a) for a in TILT_ANGLES
+               for name, speed in (("T10", TILT_T10_SPEED),
+                                   ("7ft", TILT_SEVEN_SPEED))}
+TILT_STREAM["T10-tilt30-cpd20"] = (TILT_T10_SPEED, 30)
 RUN_BY_ID = {r.ident: r for r in RUNS}
 
 
@@ -1524,6 +1649,26 @@ STUDIES = [
       "T10-free-cpd13-m163-co0.25", "T10-free-cpd20-m163",
       "T10-free-cpd13-m163-LES", "T10-free-cpd13-m163-am1.35",
       "T10-free-cpd13-m163-normal"]),
+    ("incidenceT10", "T-10 at incidence: its inflated shape held still in "
+     "a tilted stream (the fluid side alone; 13 cells across D0, 6.66 m/s, "
+     "to 30 s, read over 15-30 s)",
+     ["T10-tilt%d" % a for a in TILT_ANGLES]),
+    ("incidenceT10Resolution", "T-10 held at 30° to the stream: 13 and "
+     "20 cells across D0 (6.66 m/s, to 30 s, read over 15-30 s)",
+     ["T10-tilt30", "T10-tilt30-cpd20"]),
+    ("incidenceT10Free", "T-10 at incidence with its cloth free: on the "
+     "guide wire (axis vertical) in a horizontal wind, 163 kg, 13 cells "
+     "across D0, to 30 s, read over 15-30 s",
+     sorted(CROSSWIND_T10)),
+    ("pivotT10", "T-10 with the payload alone on the guide wire: the "
+     "canopy free to turn about the payload, the payload kept from "
+     "swinging (163 kg, 13 cells across D0, from the inflated state, to "
+     "30 s, read over 15-30 s)",
+     ["T10-pivot-crosswind0", "T10-pivot-crosswind20"]),
+    ("incidence7ft", "7 ft flat circular canopy at incidence: its inflated "
+     "shape held still in a tilted stream (the fluid side alone; 18 cells "
+     "across D0, 6.22 m/s, to 8 s, read over 4-8 s)",
+     ["7ft-tilt%d" % a for a in TILT_ANGLES]),
     ("freeFlight", "The parachutes in free flight: the swing and the "
      "glide (the T-10 at 13 cells across D0 to 60 s, read over 15-60 s; "
      "the 7 ft canopy at the main job's set-up to 15 and 30 s, read from "
@@ -1800,6 +1945,47 @@ def foam_get(path, entry):
     return out.stdout.strip()
 
 
+def _time_name(name):
+    """The time a directory's name spells, or None."""
+    try:
+        value = float(name)
+    except ValueError:
+        return None
+    return value if math.isfinite(value) else None
+
+
+def slim_case(case_dir):
+    """Remove a complete run's field writes that its report does not read:
+    the processor directories and every time directory but 0 and the
+    latest (the report reads postProcessing/, the logs and the latest
+    time's fields, which canopy-render draws). Returns (directories
+    removed, bytes freed)."""
+    def size(path):
+        total = 0
+        for root, _, files in os.walk(path):
+            for f in files:
+                try:
+                    total += os.lstat(os.path.join(root, f)).st_size
+                except OSError:
+                    pass
+        return total
+
+    names = os.listdir(case_dir)
+    times = [(_time_name(n), n) for n in names
+             if os.path.isdir(os.path.join(case_dir, n))
+             and _time_name(n) is not None]
+    latest = max(times)[1] if times else None
+    doomed = [n for n in names if n.startswith("processor")
+              and os.path.isdir(os.path.join(case_dir, n))]
+    doomed += [n for t, n in times if t != 0.0 and n != latest]
+    freed = 0
+    for n in doomed:
+        path = os.path.join(case_dir, n)
+        freed += size(path)
+        shutil.rmtree(path)
+    return len(doomed), freed
+
+
 def prepare(run):
     """Fresh copy of the tutorial with the run's edits."""
     src = os.path.join(TOP, "tutorials", run.tutorial)
@@ -1825,6 +2011,17 @@ def prepare(run):
         if out.returncode != 0:
             raise RuntimeError("run %s: cannot set %s in %s: %s"
                                % (run.ident, entry, rel, out.stderr.strip()))
+    if run.rest_state_of:
+        source = os.path.join(RUN_BY_ID[run.rest_state_of].case_dir,
+                              "postProcessing", "canopy", "canopy.h5")
+        try:
+            rest_state.write_rest_state(
+                source, os.path.join(run.case_dir, REST_STATE))
+        except rest_state.RestStateError as e:
+            raise RuntimeError("run %s starts from run %s's last state "
+                               "(`bin/canopy-validate run %s` first): %s"
+                               % (run.ident, run.rest_state_of,
+                                  run.rest_state_of, e))
 
 
 def execute(run, ranks, resume=False):
@@ -2101,7 +2298,7 @@ def breathing_band_lines(results):
 
 # Studies whose report gets the swing and glide table and the
 # suspension's angle over time (issue 34 item 5)
-SWING_STUDIES = ("freeFlight", "departureT10")
+SWING_STUDIES = ("freeFlight", "departureT10", "pivotT10")
 
 # Published oscillation of each parachute's class: Knacke, Parachute
 # Recovery Systems Design Manual, NWC TP 6575 (1991), Table 5-1
@@ -2113,6 +2310,172 @@ PUBLISHED_OSCILLATION = {
     "parachutes/G11third": "flat circular, solid: ±10° to ±40°",
     "parachutes/cross": "cross: 0° to ±3°",
 }
+
+
+# Studies of a canopy held in a tilted stream: the force and moment table
+# (tilt_lines) and the coefficients against the angle (plot_tilt)
+TILT_STUDIES = ("incidenceT10", "incidenceT10Resolution",
+                "incidenceT10Free", "incidence7ft")
+
+
+def tilt_stream(run, a=None):
+    """(speed [m/s], angle to the axis [degrees]) of the relative wind on a
+    run of a tilt study: the held runs' stream (TILT_STREAM); on the guide
+    wire in a wind W (CROSSWIND_T10), the wind less the payload's descent
+    V over the interval: sqrt(V^2 + W^2) at atan(W / V) (None before the
+    run has an analysis)."""
+    if run.ident in TILT_STREAM:
+        return TILT_STREAM[run.ident]
+    wind = CROSSWIND_T10[run.ident]
+    if a is None:
+        return None
+    v = a["descentVelocity"]["mean"]
+    return math.hypot(v, wind), math.degrees(math.atan2(wind, v))
+
+
+def tilt_coefficients(run, a):
+    """A held run's coefficients from its analysis (report.py canopyLoad)
+    and its stream (TILT_STREAM): with q = rho V^2 / 2, S0 = pi D0^2 / 4,
+    the axis z (payload to canopy: the state's payload and apex were, or
+    are, on a vertical guide wire) and the relative wind at alpha towards
+    +x (tilt_stream):
+    C_T = F_z / (q S0) along the axis, C_N = F_x / (q S0) across it
+    towards the stream's side (a force that turns the axis into the
+    stream), C_Y = F_y / (q S0) out of that plane, the force's angle off
+    the axis atan(C_N / C_T) in the plane, and C_m = -M_y / (q S0 D0) about
+    the payload (positive increases alpha: restoring where it is negative
+    at a positive alpha). Returns a dict, or None when the record has no
+    load."""
+    load = a.get("canopyLoad")
+    if not load:
+        return None
+    speed, alpha = tilt_stream(run, a)
+    p = a["parameters"]
+    d0, rho = p["nominalDiameter"]["value"], p["rho"]["value"]
+    qs = 0.5 * rho * speed ** 2 * math.pi * d0 ** 2 / 4.0
+    f, ci = load["force"], load["forceCi95"]
+    out = {"alpha": alpha, "CT": f[2] / qs, "CN": f[0] / qs,
+           "CY": f[1] / qs,
+           "CNci": None if ci[0] is None else ci[0] / qs,
+           "CYci": None if ci[1] is None else ci[1] / qs,
+           "offAxis": math.degrees(math.atan2(f[0], f[2])),
+           "Cm": None, "CmStd": None}
+    if load.get("moment"):
+        out["Cm"] = -load["moment"][1] / (qs * d0)
+        out["CmStd"] = load["momentStd"][1] / (qs * d0)
+    return out
+
+
+def trim_angle(points):
+    """The trim the held angles (alpha, C_m) show, as text: the smallest
+    angle at which C_m, linear between them in order, falls through zero
+    (positive to negative: a restoring slope); else, when C_m < 0 at every
+    angle held above 0, that it is restoring from the smallest of them (the
+    trim lies below it); else that none is found."""
+    pts = sorted((al, cm) for al, cm in points if cm is not None)
+    for (a0, c0), (a1, c1) in zip(pts, pts[1:]):
+        if c0 > 0.0 >= c1:
+            return "%.1f°" % (a0 + (a1 - a0) * c0 / (c0 - c1))
+    positive = [(al, cm) for al, cm in pts if al > 0.0]
+    if positive and all(cm < 0.0 for _, cm in positive):
+        return ("C_m < 0 at every angle held above 0°: restoring from "
+                "%g°, the trim below it" % positive[0][0])
+    return "none between the angles held"
+
+
+def tilt_lines(records):
+    """The held runs' table: per angle the coefficients (tilt_coefficients)
+    and the trim angle, beside the class's published oscillation."""
+    rows = ["| run | state | α [°] | C_T | C_N (± 95 %) | C_Y (± 95 %) | "
+            "force off axis in the plane [°] | C_m about the payload (± "
+            "std) | wall time on ranks |",
+            "|---|---|---|---|---|---|---|---|---|"]
+    points = []
+    tutorial = None
+    for run, rec, why in records:
+        tutorial = run.tutorial
+        a = rec and rec["analysis"]
+        c = a and tilt_coefficients(run, a)
+        if not c:
+            stream = tilt_stream(run, a or None)
+            rows.append("| %s | %s | %s |  |  |  |  |  |  |" % (
+                run.ident, why if rec is None else rec["state"],
+                "—" if stream is None else "%.1f" % stream[1]))
+            continue
+        if rec["complete"]:
+            points.append((c["alpha"], c["Cm"]))
+        wall = rec["wall"]
+        rows.append("| %s | %s | %.1f | %.3f | %.3f ± %s | %.3f ± %s | %.1f | "
+                    "%s | %s |" % (
+                        run.ident, rec["state"], c["alpha"], c["CT"],
+                        c["CN"], _f(c["CNci"], "%.3f"), c["CY"],
+                        _f(c["CYci"], "%.3f"), c["offAxis"],
+                        "—" if c["Cm"] is None else "%.4f ± %.4f" % (
+                            c["Cm"], c["CmStd"]),
+                        "%s on %s" % (_f(wall / 60 if wall else None,
+                                         "%.1f min"), rec["ranks"])
+                        if wall else "—"))
+    trim = trim_angle(points)
+    return rows + ["", "Coefficients on S0 = π D0²/4 and q = ρV²/2 of the "
+                   "stream (C_m on S0 D0), means over each run's "
+                   "interval (C_N, C_Y with the mean's 95 %% interval from "
+                   "the series' autocorrelation; C_m's spread over the "
+                   "states written in the interval; "
+                   "python/canopyfoam/validation.py tilt_coefficients). "
+                   "C_N > 0 pushes the canopy towards the stream's side, "
+                   "turning its axis into the stream; C_m < 0 at α > 0 "
+                   "is restoring. Trim (C_m through zero, restoring "
+                   "slope, linear between the angles held): %s; "
+                   "published oscillation of the class (Knacke, NWC TP "
+                   "6575, Table 5-1): %s." % (
+                       trim, PUBLISHED_OSCILLATION.get(tutorial, "—")), ""]
+
+
+def save_figure(fig, ax, name):
+    """Grid and legend on ax, fig written to FIG_DIR/name.png and closed;
+    its path relative to the report."""
+    import matplotlib.pyplot as plt
+    ax.grid(True, alpha=0.3)
+    ax.legend(loc="best", fontsize=8)
+    fig.tight_layout()
+    path = os.path.join(FIG_DIR, name + ".png")
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return os.path.relpath(path, os.path.dirname(DOC))
+
+
+def plot_tilt(name, title, results):
+    """C_N and C_m against the angle for a held study, in FIG_DIR/name.png;
+    its path relative to the report, or None without data."""
+    pts = []
+    for run, rec in results:
+        a = rec and rec["analysis"]
+        c = a and tilt_coefficients(run, a)
+        if c:
+            pts.append(c)
+    if not pts:
+        return None
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    os.makedirs(FIG_DIR, exist_ok=True)
+    pts.sort(key=lambda c: c["alpha"])
+    al = [c["alpha"] for c in pts]
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    ax.errorbar(al, [c["CN"] for c in pts],
+                yerr=[c["CNci"] or 0.0 for c in pts], marker="o",
+                label="C_N (across the axis, towards the stream's side)")
+    ax.errorbar(al, [c["CY"] for c in pts],
+                yerr=[c["CYci"] or 0.0 for c in pts], marker="s",
+                label="C_Y (out of the plane)")
+    ax.plot(al, [c["Cm"] if c["Cm"] is not None else float("nan")
+                 for c in pts], marker="^",
+            label="C_m about the payload (< 0 restoring)")
+    ax.axhline(0.0, color="k", lw=0.8)
+    ax.set_xlabel("angle of the stream to the canopy's axis α [°]")
+    ax.set_ylabel("coefficient")
+    ax.set_title(title, fontsize=9)
+    return save_figure(fig, ax, name)
 
 
 def swing_lines(results):
@@ -2844,13 +3207,7 @@ def plot_series(name, title, runs_results, key, ylabel, reference_lines=(),
         ax.set_title(title)
     else:
         ax.set_title(title, fontsize=title_size)
-    ax.grid(True, alpha=0.3)
-    ax.legend(loc="best", fontsize=8)
-    fig.tight_layout()
-    path = os.path.join(FIG_DIR, name + ".png")
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return os.path.relpath(path, os.path.dirname(DOC))
+    return save_figure(fig, ax, name)
 
 
 def skirt_t10_lines(results):
@@ -3838,6 +4195,12 @@ def write_report():
         md += ["## %s" % title, ""]
         if name in FORCE_STUDIES:
             md += disc_table(records)
+        elif name in TILT_STUDIES:
+            md += tilt_lines(records)
+            tilt_fig = plot_tilt(name, title, results)
+            if tilt_fig:
+                md += ["![%s: the coefficients against the angle](%s)"
+                       % (title, tilt_fig), ""]
         else:
             md += [TABLE_HEAD]
             md += [run_row(run, rec, why) for run, rec, why in records]
@@ -3910,24 +4273,36 @@ def write_report():
                    "tilts, instead of turning into the wind; then it swings "
                    "out to 30-40°.",
                    "",
-                   "What it lacks is a normal force: over 10-20 s the "
+                   "It is not a missing normal force. Over 10-20 s the "
                    "relative wind meets the T-10's axis at 28° on average "
                    "(up to 73°) while the canopy's force stays 0.9° off "
                    "that axis on average (at most 3.6°; at 20 cells 3.3° "
-                   "and 8.8° at 35° and up to 79°; table above), so "
-                   "the force's lift across the wind is its drag times "
-                   "tan(incidence) and nothing turns the axis back into "
-                   "the wind: the force, nearly along the suspension, "
-                   "passes close to the payload and the system's centre "
-                   "of mass and has little moment about them. A canopy with a normal "
-                   "force pushing it downwind at incidence (a negative "
-                   "slope of the pitching moment) swings about a trim "
-                   "angle instead. The 7 ft canopy, which settles, has its "
-                   "force 2.7° off its axis on average (at most 7.5°) at "
-                   "17° mean incidence (at most 35°) over 10-30 s. "
-                   "The next measurement is the canopy's normal force "
-                   "against incidence, the canopy held in a tilted stream, "
-                   "against published moment and normal-force curves.",
+                   "and 8.8° at 35° and up to 79°; table above), which "
+                   "read at face value is no normal force. Held still in a "
+                   "tilted stream (study incidenceT10) the same inflated "
+                   "shape carries one, C_N 0.08 / 0.07 / 0.15 / 0.22 at "
+                   "10 / 20 / 30 / 45° (its force 5-18° off the axis "
+                   "towards the stream's side), with a restoring moment "
+                   "about the payload from 10° up; with its cloth free on "
+                   "the guide wire in a crosswind (study incidenceT10Free) "
+                   "C_N 0.075 / 0.106 / 0.158 at 11 / 22 / 36°. In steady "
+                   "flow the model T-10 is statically stable. The force "
+                   "along the axis in free flight comes with the motion: "
+                   "the canopy's lateral acceleration and turn (its "
+                   "apparent mass, of the order of the enclosed air, "
+                   "about 170 kg, is as large as the payload) and the wake "
+                   "it carries. With the payload alone on the guide wire "
+                   "(study pivotT10: the canopy may turn about the payload, "
+                   "the payload cannot swing) the canopy still leaves the "
+                   "vertical in still air, from about 5 s (3.3° at 5 s, "
+                   "14.5° at 8 s, 32° at 11 s: about 0.5 /s), and then "
+                   "swings through the vertical to 30-38° either side: the "
+                   "departure is the canopy's own turning about the "
+                   "payload, a dynamic instability (the moment's "
+                   "dependence on the rate of turn), not the payload's "
+                   "pendulum and not a static one. The canopy's moment "
+                   "against its rate of turn (the pitch damping) is the "
+                   "next measurement.",
                    "",
                    "The departure is not the numerics': the coupling's "
                    "tolerance a quarter gives σ = 0.98 /s, half the time "
@@ -3944,8 +4319,11 @@ def write_report():
                    "Published: extended-skirt canopies oscillate by ±10° to "
                    "±15° (Knacke, NWC TP 6575, Table 5-1); no source found "
                    "reports a T-10 that glides off or tumbles. The model's "
-                   "departure is a finding against that, not yet "
-                   "explained. What the model leaves out that would "
+                   "departure is a finding against that, its cause "
+                   "open beyond what the studies incidenceT10, "
+                   "incidenceT10Free and pivotT10 show (statically "
+                   "stable, dynamically not). What the model leaves out "
+                   "that would "
                    "stabilise it: the vent (0.1 D0 assumed, about one cell "
                    "at 13 cells across D0 and effectively closed; at 20 "
                    "cells about two, σ 15 % lower), the canopy's effective "
@@ -3953,6 +4331,67 @@ def write_report():
                    "at q ≈ 27 Pa is all the model has; Knacke's stable "
                    "canopies have more), the anti-inversion net and the "
                    "jumper's own drag.", ""]
+        if name == "incidenceT10":
+            md += ["The fluid side alone (issue 34 item 5): the inflated "
+                   "T-10 of T10-skirt-cpd13-m163 (its state at 80 s on the "
+                   "guide wire, axis vertical; python/canopyfoam/"
+                   "rest_state.py) with every node fixed, in a uniform "
+                   "6.66 m/s stream (its descent) tilted by α from the "
+                   "axis. The normal force grows with the angle and points "
+                   "to the stream's side, the moment about the payload "
+                   "restores from 10° up: the shape is statically stable. "
+                   "At 0° the means scatter by the wake's unsteadiness "
+                   "(C_N 0.025 ± 0.076); out of the plane C_Y is -0.04 to "
+                   "-0.07 at every angle, the held shape's own asymmetry "
+                   "(one instant of a breathing canopy, not axisymmetric), "
+                   "as large as C_N at 10-20°, so the slope near 0° is not "
+                   "resolved. Published C_N(α) and C_m(α) curves for "
+                   "extended-skirt canopies were not found in the sources "
+                   "the project can reach (Knacke's static-stability "
+                   "figures, Heinrich's wind-tunnel reports are named but "
+                   "not readable here); the class's published oscillation "
+                   "(±10° to ±15°, Knacke Table 5-1) implies a trim near 0° "
+                   "or a small unstable band around it, which these curves "
+                   "do not contradict. The held shape does not deform with "
+                   "the incidence: study incidenceT10Free lets it.", ""]
+        if name == "incidenceT10Free":
+            md += ["The cloth free, the axis held: the T-10 at 163 kg from "
+                   "the inflated state of T10-skirt-cpd13-m163 (every node "
+                   "given the 6.66 m/s descent), payload and apex on the "
+                   "vertical guide wire, in a steady horizontal wind W = "
+                   "6.66 tan(α0) m/s for α0 = 0, 10, 20, 30°; the relative "
+                   "wind meets the axis at atan(W/V) for the descent V the "
+                   "run reads (the wind adds to the relative speed, so V "
+                   "falls: 6.05, 5.88, 5.29 m/s and the angles are 11, 22, "
+                   "36°; at 0° 6.03 m/s, below the 6.66 m/s of the "
+                   "state's own run: the wake restarts from a uniform "
+                   "stream and 30 s do not rebuild it). The deforming "
+                   "canopy carries the normal force "
+                   "the rigid one does, a little more (C_N 0.106 at 22° "
+                   "against 0.066 held at 20°), and its moment about the "
+                   "payload restores: statically stable with its cloth "
+                   "free (the trim interpolated between 0° and 11° lies "
+                   "inside C_m's spread at 0°). The axial coefficient on "
+                   "the relative wind falls with the angle (C_T 0.84, "
+                   "0.81, 0.76, 0.72).", ""]
+        if name == "pivotT10":
+            md += ["The payload alone on the guide wire (guideWire { "
+                   "payload true; apex false; }): the canopy may turn "
+                   "about the payload, where its lines meet, but the "
+                   "payload cannot swing, so the system's pendulum is "
+                   "gone. In still air the canopy leaves the vertical "
+                   "from about 5 s (3.3° at 5 s, 7.8° at 6.5 s, 14.5° at "
+                   "8 s: about 0.5 /s), reaches 32° at 11 s and then "
+                   "swings through the vertical to 25-38° either side "
+                   "with a period of about 10 s. In the 2.42 m/s wind "
+                   "(relative wind 24° from the vertical at its 5.36 m/s "
+                   "descent) it swings about the wind's direction (mean "
+                   "tilt 20° downwind over 15-30 s) between -8° and 50°, "
+                   "period about 12 s. Its static trim is where the held "
+                   "and guided studies put it (along the wind); what "
+                   "grows is the canopy's rotation about the payload: a "
+                   "dynamic instability of the canopy itself, with the "
+                   "payload's swing taken away.", ""]
         if name == "freeFlight":
             md += ["The 7 ft canopy at the main job's set-up (18 cells "
                    "across D0, the cloth without stiffness in compression) "
@@ -4876,7 +5315,7 @@ def write_report():
             md += ["The seed: inflation from different folded states "
                    "converges to one terminal velocity, about 3 m/s "
                    "(Fig. 6.2).", ""]
-        fig = None if name in FORCE_STUDIES else plot_study(
+        fig = None if name in FORCE_STUDIES + TILT_STUDIES else plot_study(
             name, title, results, refs)
         if fig:
             md += ["![%s](%s)" % (title, fig), ""]
@@ -4921,6 +5360,12 @@ def main(argv=None):
                    help="continue stopped runs from their latest written "
                    "time instead of starting them afresh (a long run in "
                    "parts: stop it with Ctrl-C or kill, continue later)")
+    r.add_argument("--keep-fields", action="store_true",
+                   help="keep every field write of a complete run (by "
+                   "default its processor directories and all time "
+                   "directories but 0 and the latest are removed once "
+                   "its report is written: a study of dozens of runs "
+                   "would otherwise fill the disk)")
     sub.add_parser("report", help="write docs/validation.md from the "
                    "complete runs")
     sub.add_parser("list", help="list the studies and runs with their state")
@@ -4972,6 +5417,13 @@ def main(argv=None):
         try:
             ok = execute(run, args.np, resume) and ok
             record(run)     # its record in docs/validation/runs
+            if run_state(run) == "complete" and not args.keep_fields:
+                n, freed = slim_case(run.case_dir)
+                if n:
+                    print("canopy-validate: %s: removed %d field writes "
+                          "(%.2f GB; postProcessing, the logs and the "
+                          "latest time kept; --keep-fields keeps them)"
+                          % (ident, n, freed / 1e9), flush=True)
         except RuntimeError as e:
             print("canopy-validate: %s" % e, file=sys.stderr)
             ok = False

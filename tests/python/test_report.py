@@ -37,6 +37,8 @@ import subprocess
 import sys
 import tempfile
 
+import numpy as np
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, os.path.join(ROOT, "python"))
@@ -630,6 +632,26 @@ def test_departure_and_glide():
           report.swing_growth(t, 0.19 * V * H / H.max(), V) is None, "None")
 
 
+def test_canopy_load(tmp):
+    """canopy_load: the load's mean vector and spread over the interval,
+    and no moment without canopy.h5. Force component k = a_k + b_k sin(2
+    pi t / T) sampled at T/40 over 3 whole periods from t = 0: the
+    trapezoidal weights give the sample sums, whose sin and sin^2 sums over
+    whole periods are exactly 0 and N/2, so the mean is a_k and the std
+    |b_k| / sqrt(2) to round-off (1e-12)."""
+    t = np.linspace(0.0, 3.0, 121)
+    a = np.array([1.5, -2.0, 300.0])
+    b = np.array([0.5, 0.0, -20.0])
+    force = a[None, :] + np.outer(np.sin(2 * math.pi * t), b)
+    load = report.canopy_load(tmp, t, force, 0.0, 3.0)
+    close("load: mean vector", max(abs(x - y) for x, y in
+                                   zip(load["force"], a)), 0.0, 1e-12, "N")
+    close("load: spread", max(abs(x - abs(y) / math.sqrt(2)) for x, y in
+                              zip(load["forceStd"], b)), 0.0, 1e-12, "N")
+    check("load: no moment without canopy.h5", load["moment"] is None and
+          "canopy.h5" in load["momentNote"], load["momentNote"])
+
+
 def main():
     tmp = tempfile.mkdtemp(prefix="canopy-report-")
 
@@ -644,6 +666,7 @@ def main():
         test_mean_confidence(tmp)
         test_swing(tmp)
         test_departure_and_glide()
+        test_canopy_load(tmp)
     return run_checks(tmp, body, "report")
 
 
