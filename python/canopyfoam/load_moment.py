@@ -1,17 +1,21 @@
-"""load_moment.py — the moment of the fluid's load on the cloth about the payload, from the states a run wrote to its canopy.h5.
+"""load_moment.py — the moment about the payload of the load the structure is given on its cloth, from the states a run wrote to its canopy.h5.
 
-The load the coupling hands the structure (canopyCoupling, clothLoad) is
-a pressure jump dp per cloth triangle, acting as dp A n on the triangle
-(A n = (x1 - x0) x (x2 - x0) / 2, the triangles' winding as written), and
-a tangential force per node (f_ext); canopy.dat's force is their sum.
-Both are written with every state, so the moment about the payload node
-at each written state is
+canopy.h5 holds with every state a pressure jump dp per cloth triangle,
+acting as dp A n on the triangle (A n = (x1 - x0) x (x2 - x0) / 2, the
+triangles' winding as written), and the external nodal forces f_ext: the
+sum of the contributions canopyCoupling sets (the fluid's tangential
+load, the added-mass stabiliser's balancing force m_a (d.a) d where the
+stabiliser is on, the lines' drag where that is on). The moment about
+the payload node at each written state is
 
     M = sum_triangles (c - p) x dp A n + sum_nodes (x - p) x f_ext,
 
-c a triangle's centroid, p the payload's position. The pressure jump
-acts on a triangle as a uniform pressure, whose resultant passes through
-its centroid. Reading needs h5py (Debian's python3-h5py).
+c a triangle's centroid, p the payload's position: a uniform pressure
+puts its resultant there. For a canopy held still (fixed nodes, no line
+drag) the stabiliser's balance is zero and the sum of the two forces is
+canopy.dat's force, the fluid's load; for a moving canopy the balance
+adds the stabiliser's inertia m_a a along the normals. Reading needs
+h5py (Debian's python3-h5py).
 """
 
 import math

@@ -744,12 +744,14 @@ def suspension_swing(t, offset, ghat):
 
 
 def canopy_load(case_dir, t, force, t0, t1):
-    """The load on the cloth over the interval: its time-weighted mean
-    vector [N] with each component's standard deviation and the mean's 95
-    % interval (mean_confidence; None where not estimated), and its moment
-    about the payload [N m] (load_moment.py), the mean and standard
-    deviation over the states canopy.h5 holds in the interval (moment None
-    with a note when they cannot be read)."""
+    """The load on the cloth over the interval: the fluid's (canopy.dat's
+    force) time-weighted mean vector [N] with each component's standard
+    deviation and the mean's 95 % interval (mean_confidence; None where
+    not estimated), and the moment about the payload [N m] of the load
+    the structure is given (load_moment.py: the fluid's, plus the
+    added-mass stabiliser's balance on a moving cloth), the mean and
+    standard deviation over the states canopy.h5 holds in the interval
+    (moment None with a note when they cannot be read)."""
     force = np.asarray(force, dtype=float)
     out = {"force": [], "forceStd": [], "forceCi95": []}
     for k in range(3):

@@ -29,12 +29,15 @@ import shutil
 import signal
 import subprocess
 import sys
+import textwrap
 import time
 
 import numpy as np
 
+from . import load_moment
 from . import report as rep
 from . import rest_state
+from . import turn_fit
 from . import validation_archive as archive
 
 TOP = os.path.dirname(os.path.dirname(os.path.dirname(
@@ -1513,20 +1516,21 @@ RUNS += [
 # (does the vertical descent depart without the payload's swing?) and in
 # the 20° wind (where does the axis settle: at the trim the moment gives)
 PIVOT = [(PROPS, "guideWire", "{ payload true; apex false; }")]
+PIVOT_WIND = {"T10-pivot-crosswind%d" % a:
+              CROSSWIND_T10["T10-crosswind%d" % a] for a in (0, 20)}
 RUNS += [
-    ten("T10-pivot-crosswind%d" % a, "the extended skirt from its inflated "
-        "state (T10-skirt-cpd13-m163 at 80 s), the payload alone on the "
-        "guide wire, in a %.3g m/s horizontal wind, 13 cells across D0"
-        % CROSSWIND_T10["T10-crosswind%d" % a], CPD13,
+    ten(ident, "the extended skirt from its inflated state "
+        "(T10-skirt-cpd13-m163 at 80 s), the payload alone on the guide "
+        "wire, in a %.3g m/s horizontal wind, 13 cells across D0" % wind,
+        CPD13,
         [(PROPS, "initialState", '"%s"' % REST_STATE),
          (PROPS, "initialVelocity", "(0 0 %g)" % -TILT_T10_SPEED),
-         (PROPS, "coupling/frame/wind", "(%.6g 0 0)"
-          % CROSSWIND_T10["T10-crosswind%d" % a]),
+         (PROPS, "coupling/frame/wind", "(%.6g 0 0)" % wind),
          ("0.orig/U", "internalField", "uniform (%.6g 0 %g)"
-          % (CROSSWIND_T10["T10-crosswind%d" % a], TILT_T10_SPEED))]
+          % (wind, TILT_T10_SPEED))]
         + PIVOT, guided=False, start=15, end=30,
         rest_state_of="T10-skirt-cpd13-m163")
-    for a in (0, 20)
+    for ident, wind in sorted(PIVOT_WIND.items())
 ]
 # Each held run's stream: (speed [m/s], angle to the axis [degrees])
 TILT_STREAM = {"%s-tilt%d" % (name, a): (speed, a) for a in TILT_ANGLES
@@ -2193,6 +2197,14 @@ def result(run):
         except (rep.ReportError, OSError) as e2:
             return None, "%s (%s)" % (state, e2)
         state += " before its interval (last third shown)"
+    if run.ident in PIVOT_WIND:
+        try:
+            r["turnFit"] = turn_fit.analyse(run.case_dir,
+                                            r["steady"]["start"],
+                                            r["steady"]["end"])
+        except (load_moment.LoadMomentError, rep.ReportError, OSError,
+                np.linalg.LinAlgError) as e:
+            r["turnFit"] = {"note": str(e)}
     return r, state
 
 
@@ -2474,8 +2486,48 @@ def plot_tilt(name, title, results):
     ax.axhline(0.0, color="k", lw=0.8)
     ax.set_xlabel("angle of the stream to the canopy's axis α [°]")
     ax.set_ylabel("coefficient")
-    ax.set_title(title, fontsize=9)
+    ax.set_title(textwrap.fill(title, 90), fontsize=9)
     return save_figure(fig, ax, name)
+
+
+def turn_fit_lines(results):
+    """The pivoting runs' fitted moment about the payload (turn_fit.py:
+    M = k theta + c theta' + i theta'' + m0 over each run's interval) with
+    its rate coefficient in the canopy's own time, C_mq = c / (q S0 D0 *
+    D0 / (2 U)), U the relative wind sqrt(V^2 + W^2) on the descent V and
+    the wind W, q = rho U^2 / 2."""
+    rows = []
+    for run, rec in results:
+        a = rec and rec["analysis"]
+        f = a and a.get("turnFit")
+        if not f or "k" not in f:
+            continue
+        p = a["parameters"]
+        d0, rho = p["nominalDiameter"]["value"], p["rho"]["value"]
+        u = math.hypot(a["descentVelocity"]["mean"], PIVOT_WIND[run.ident])
+        qsd = 0.5 * rho * u ** 2 * math.pi * d0 ** 2 / 4.0 * d0
+        rows.append("| %s | %.3g-%.3g s | %.3g to %.3g | %.0f ± %.0f | "
+                    "%.0f ± %.0f | %.0f ± %.0f | %.2f | %.1f | %.3f ± %.3f "
+                    "|" % (
+                        run.ident, a["steady"]["start"], a["steady"]["end"],
+                        f["angleMin"], f["angleMax"], f["k"], f["kErr"],
+                        f["c"], f["cErr"], f["i"], f["iErr"], f["r2"],
+                        f["condition"],
+                        f["c"] / (qsd * d0 / (2.0 * u)),
+                        f["cErr"] / (qsd * d0 / (2.0 * u))))
+    if not rows:
+        return []
+    return ["The load's moment about the payload fitted as M = k θ + c θ' "
+            "+ i θ'' + m0 over the written states of each interval "
+            "(python/canopyfoam/turn_fit.py; θ the canopy's angle of turn "
+            "in its plane of swing [rad], ± standard errors; k < 0 "
+            "restores, c > 0 is a moment along the rate of turn: a "
+            "negative damping; the condition number of the scaled "
+            "columns says how well the swing separates the three terms, "
+            "which one exponential sinusoid cannot):", "",
+            "| run | interval | θ [°] | k [N m] | c [N m s] | i [kg m²] | "
+            "R² | condition | C_mq = c / (q S0 D0 · D0/2U) |",
+            "|---|---|---|---|---|---|---|---|---|"] + rows + [""]
 
 
 def swing_lines(results):
@@ -4254,6 +4306,7 @@ def write_report():
             md += breathing_band_lines(results)
         if name in SWING_STUDIES:
             md += swing_lines(results)
+            md += turn_fit_lines(results)
             swing_fig = plot_swing(name, title, results)
             if swing_fig:
                 md += ["![%s: the suspension's angle](%s)" % (title,
@@ -4283,7 +4336,9 @@ def write_report():
                    "shape carries one, C_N 0.08 / 0.07 / 0.15 / 0.22 at "
                    "10 / 20 / 30 / 45° (its force 5-18° off the axis "
                    "towards the stream's side), with a restoring moment "
-                   "about the payload from 10° up; with its cloth free on "
+                   "about the payload from 10° up (13 cells; at 20 cells "
+                   "the 30° normal force is a third of that, restoring "
+                   "still: study incidenceT10Resolution); with its cloth free on "
                    "the guide wire in a crosswind (study incidenceT10Free) "
                    "C_N 0.075 / 0.106 / 0.158 at 11 / 22 / 36°. In steady "
                    "flow the model T-10 is statically stable. The force "
@@ -4300,9 +4355,10 @@ def write_report():
                    "departure is the canopy's own turning about the "
                    "payload, a dynamic instability (the moment's "
                    "dependence on the rate of turn), not the payload's "
-                   "pendulum and not a static one. The canopy's moment "
-                   "against its rate of turn (the pitch damping) is the "
-                   "next measurement.",
+                   "pendulum and not a static one: the air's moment on "
+                   "the pivoting canopy grows with its rate of turn (C_mq "
+                   "+0.07 in still air, +0.12 in a crosswind; study "
+                   "pivotT10), a negative damping.",
                    "",
                    "The departure is not the numerics': the coupling's "
                    "tolerance a quarter gives σ = 0.98 /s, half the time "
@@ -4353,7 +4409,22 @@ def write_report():
                    "(±10° to ±15°, Knacke Table 5-1) implies a trim near 0° "
                    "or a small unstable band around it, which these curves "
                    "do not contradict. The held shape does not deform with "
-                   "the incidence: study incidenceT10Free lets it.", ""]
+                   "the incidence: study incidenceT10Free lets it. At 20 "
+                   "cells across D0 the 30° normal force is a third of "
+                   "this (study incidenceT10Resolution): restoring still, "
+                   "its size not converged.", ""]
+        if name == "incidenceT10Resolution":
+            md += ["The 30° stream on the 20-cell canopy (the state of "
+                   "T10-skirt-cpd20 at 50 s, held on the 20-cell mesh): "
+                   "C_N 0.046 ± 0.006 against 0.153 ± 0.007 at 13 cells, "
+                   "C_m -0.075 against -0.151, C_T 0.82 against 0.71, and "
+                   "the out-of-plane C_Y gone (-0.001 against -0.050). "
+                   "The sign holds, restoring at both, but the size of "
+                   "the normal force is not converged at 13 cells (the "
+                   "20-cell shape is another too: C_D0 0.727 against "
+                   "0.670 in its guided descent); a third level is needed "
+                   "before a GCI can be stated, and the incidence studies' "
+                   "magnitudes carry that factor of about 3.", ""]
         if name == "incidenceT10Free":
             md += ["The cloth free, the axis held: the T-10 at 163 kg from "
                    "the inflated state of T10-skirt-cpd13-m163 (every node "
@@ -4374,6 +4445,24 @@ def write_report():
                    "inside C_m's spread at 0°). The axial coefficient on "
                    "the relative wind falls with the angle (C_T 0.84, "
                    "0.81, 0.76, 0.72).", ""]
+        if name == "incidence7ft":
+            md += ["The main job's canopy (7ft-default-40s's state at 40 "
+                   "s, on the guide wire, 18 cells across D0) held still "
+                   "in a 6.22 m/s stream. At 0° C_T 0.673 (its guided "
+                   "descent: C_D0 0.685). Up to 10° the normal force is "
+                   "nil (C_N 0.019 ± 0.015 at 0°, 0.000 ± 0.007 at 10°) "
+                   "and C_m stays at the held shape's own offset (-0.020 "
+                   "at both): neutral; from 20° it restores (C_N 0.039, "
+                   "0.093, 0.157 and C_m -0.075, -0.141, -0.217 at 20, "
+                   "30, 45°). A flat circular canopy is published to "
+                   "oscillate by ±10° to ±40° (Knacke, Table 5-1), the "
+                   "unstable or neutral band about 0° that a trim at "
+                   "±10-20° implies; the model's neutral band to about 10° "
+                   "and its free flight (a bounded swing of at most 25.6°, "
+                   "mean 10.3°, study freeFlight) agree with that. One "
+                   "resolution: the T-10's 13- and 20-cell held runs "
+                   "differ by a factor of about 3 in C_N at 30° (study "
+                   "incidenceT10Resolution).", ""]
         if name == "pivotT10":
             md += ["The payload alone on the guide wire (guideWire { "
                    "payload true; apex false; }): the canopy may turn "
@@ -4391,7 +4480,27 @@ def write_report():
                    "and guided studies put it (along the wind); what "
                    "grows is the canopy's rotation about the payload: a "
                    "dynamic instability of the canopy itself, with the "
-                   "payload's swing taken away.", ""]
+                   "payload's swing taken away. The fit of the load's "
+                   "moment about the payload over 15-30 s (table above) "
+                   "says why: besides a restoring k < 0, a rate "
+                   "coefficient c = +1330 ± 280 N m s in still air and "
+                   "+2150 ± 340 in the wind (C_mq +0.07 and +0.12 in the "
+                   "canopy's time D0/2U), a moment along the rate of turn "
+                   "that feeds the swing (a negative damping) "
+                   "(the swing is a limit cycle there, not one growing "
+                   "sinusoid, so the fit separates c from k and i: "
+                   "condition numbers 8.5 and 6.0). The moment is that "
+                   "of the load the structure is given, the fluid's plus "
+                   "the added-mass stabiliser's balance m_a a along the "
+                   "normals (load_moment.py); the balance is an inertia "
+                   "and adds to i (the stabiliser's 2.7 kg/m² over the "
+                   "cloth at the canopy's distance from the payload is of "
+                   "the order of 10^4 kg m², the size of i), not to c: "
+                   "the rate term is the model air's response to the "
+                   "canopy's turning. Which part of "
+                   "it (the wake the canopy carries, the flow through the "
+                   "vent one cell wide, the IB's smeared interface) makes "
+                   "it negative is the next question.", ""]
         if name == "freeFlight":
             md += ["The 7 ft canopy at the main job's set-up (18 cells "
                    "across D0, the cloth without stiffness in compression) "
