@@ -42,6 +42,9 @@ Definitions used throughout (stated in the summary too):
 - the canopy's shape over the interval (crown height, skirt radius,
   silhouette, creases by ring) from postProcessing/canopy/canopy.h5:
   shape.py states the definitions.
+- the load on the cloth over the interval: canopy.dat's force as a mean
+  vector with its spread and 95 % intervals, and the moment about the
+  payload of the load canopy.h5 holds (load_moment.py states it).
 
 Only numpy is needed to analyse the time series; the shape needs h5py and
 is reported as not read without it (or without canopy.h5); matplotlib is

@@ -1426,7 +1426,7 @@ RUNS += [
 # inlet and the sides). Per angle: the force along the axis and across it,
 # and its moment about the payload (where the lines meet), so the angle at
 # which the moment vanishes is the trim the parachute swings about
-# (tilt_table). T-10: T10-skirt-cpd13-m163's state at 80 s (6.66 m/s), to
+# (tilt_lines). T-10: T10-skirt-cpd13-m163's state at 80 s (6.66 m/s), to
 # 30 s (19 D0/V), read over 15-30 s
 REST_STATE = "constant/restState.h5"
 
