@@ -2423,7 +2423,7 @@ def tilt_lines(records):
         a = rec and rec["analysis"]
         c = a and tilt_coefficients(run, a)
         if not c:
-            stream = tilt_stream(run, a or None)
+            stream = tilt_stream(run, a)
             rows.append("| %s | %s | %s |  |  |  |  |  |  |" % (
                 run.ident, why if rec is None else rec["state"],
                 "—" if stream is None else "%.1f" % stream[1]))
