@@ -19,6 +19,15 @@ Prints one PASS/FAIL line per check; exits 1 if any fails.
    are those of check 1 translated (the moment about a moved point changes
    by the lever times the force); a file without a payload node, a
    missing file and an empty interval are refused with LoadMomentError.
+4. The added-mass stabiliser's balance and the weights, in the same file
+   with accelerations (1,0,0), (0,1,0), (0,0,2) at the cloth's nodes and
+   masses 0.1, 0.2, 0.3 kg (payload 5 kg), 3 kg/m^2 of added mass (a third
+   of the 0.5 m^2 triangle, 0.5 kg, to each node) and gravity (0,0,-10):
+   about the payload (0,0,-3) at t = 2 s, worked by hand, the balance's
+   moment is (-1, 2, 0.5) N m with direction all and (1, 0, 0) with
+   direction normal (only the third node's acceleration is along the
+   normal (0,0,1)), the weights' (-3, 2, 0), and the air's moment is the
+   load's less the balance's; an unknown direction is refused.
 """
 
 import os
@@ -74,12 +83,15 @@ try:
     with h5py.File(path, "w") as f:
         f["mesh/triangles"] = np.array([[0, 1, 2]], dtype=np.int32)
         f["mesh/node_group"] = np.array([0, 0, 0, 3], dtype=np.int32)
+        f["mesh/node_mass"] = np.array([0.1, 0.2, 0.3, 5.0])
         for k, (t, p) in enumerate(sorted(payloads.items())):
             s = f.create_group("steps/%06d" % k)
             s.attrs["time"] = t
             s["x"] = np.vstack([x, p])
             s["f_ext"] = np.vstack([f_ext, [0, 0, 0]])
             s["dp"] = np.array([2.0])
+            s["acc"] = np.array([[1.0, 0, 0], [0, 1, 0], [0, 0, 2],
+                                 [0, 0, 0]])
     a = load_moment.analyse(tmp, 1.5, 3.0)
     want = []
     for t in (2.0, 3.0):
@@ -96,6 +108,27 @@ try:
                              np.round(want, 6).tolist()))
     check("h5: force", np.allclose(a["forceMean"], [0, 2, 1], atol=1e-15,
                                    rtol=0), "%s N" % a["forceMean"])
+    for direction, want_b in (("all", [-1.0, 2, 0.5]),
+                              ("normal", [1.0, 0, 0])):
+        b = load_moment.analyse(tmp, 2.0, 2.0, stabiliser={
+            "mass": 3.0, "direction": direction}, gravity=[0, 0, -10.0])
+        check("h5: the stabiliser's balance, direction %s" % direction,
+              np.allclose(b["balanceMoment"][0], want_b, atol=1e-14, rtol=0)
+              and np.allclose(b["fluidMoment"][0],
+                              np.subtract(b["moment"][0], want_b),
+                              atol=1e-14, rtol=0),
+              "%s N m (by hand %s)" % (b["balanceMoment"][0], want_b))
+    check("h5: the weights' moment",
+          np.allclose(b["weightMoment"][0], [-3.0, 2, 0], atol=1e-14,
+                      rtol=0), "%s N m (by hand (-3, 2, 0))"
+          % b["weightMoment"][0])
+    try:
+        load_moment.analyse(tmp, stabiliser={"mass": 1.0,
+                                             "direction": "tangential"})
+        check("h5: unknown stabiliser direction refused", False, "no error")
+    except load_moment.LoadMomentError as e:
+        check("h5: unknown stabiliser direction refused",
+              "direction" in str(e), str(e))
     for name, args in (("empty interval", (5.0, 6.0)),):
         try:
             load_moment.analyse(tmp, *args)

@@ -275,8 +275,16 @@ canopy_model* buildReference
         e.areaTolerance = 1e-9;
     }
 
+    // fixedNodes.all: every node the canopy's builder made (not the lines)
+    if (props.subOrEmptyDict("fixedNodes").lookupOrDefault<bool>("all", false))
+    {
+        for (int i = 0; i < canopy_model_node_count(m); ++i)
+        {
+            ok(m, canopy_model_set_fixed(m, i, 1), "canopy_model_set_fixed");
+        }
+    }
     // Rim: nodes of edges that belong to one triangle only, without a vent's
-    if (props.subOrEmptyDict("fixedNodes").lookupOrDefault<bool>("skirt", false))
+    else if (props.subOrEmptyDict("fixedNodes").lookupOrDefault<bool>("skirt", false))
     {
         const int nt = canopy_model_triangle_count(m);
         const int n = canopy_model_node_count(m);

@@ -172,6 +172,7 @@ void Foam::canopyCoupling::beginTimeStep(volVectorField& U)
 void Foam::canopyCoupling::beginTimeStep()
 {
     failure_.clear();
+    structure_.beginStep(mesh_.time().deltaTValue());
     structure_.checkpoint();
     parts_->frame().startAt(structure_.time());
     parts_->addedMass().beginStep(structure_);

@@ -13,6 +13,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "canopyStructure.H"
+#include "prescribedRotation.H"
 #include "Time.H"
 #include "IOdictionary.H"
 #include <fenv.h>
@@ -126,7 +127,8 @@ Foam::canopyStructure::canopyStructure
     haveLastWrite_(false),
     warnedTime_(false),
     initialVelocity_(Zero),
-    nodalForcesChanged_(false)
+    nodalForcesChanged_(false),
+    motion_(nullptr)
 {
     {
         // A number beyond the double range (1e999) overflows in
@@ -195,7 +197,8 @@ Foam::canopyStructure::canopyStructure
     haveLastWrite_(false),
     warnedTime_(false),
     initialVelocity_(Zero),
-    nodalForcesChanged_(false)
+    nodalForcesChanged_(false),
+    motion_(nullptr)
 {
     build(defaultGravity);
 }
@@ -621,6 +624,15 @@ void Foam::canopyStructure::setTriangleAddedMass
         ),
         FUNCTION_NAME, "canopy_model_set_triangle_added_mass"
     );
+}
+
+
+void Foam::canopyStructure::beginStep(const scalar dt)
+{
+    if (motion_)
+    {
+        motion_->beginStep(model_.get(), dt);
+    }
 }
 
 

@@ -21,6 +21,7 @@ Description
 #include "canopyStructure.H"
 #include "OStringStream.H"
 #include "scopedEntryReader.H"
+#include "prescribedRotation.H"
 
 #include "canopy.h"
 
@@ -168,6 +169,7 @@ struct structureSpec
     scalar speedLimit = 1e4;
     bool fixSkirt = false;
     bool fixAll = false;
+    const dictionary* motionDict = nullptr;
 };
 
 
@@ -627,7 +629,17 @@ void readFixedNodes(const scopedEntryReader& top, structureSpec& s)
             " guideWire.apex false"
         );
     }
-    fr.warnUnused(wordList{"skirt", "all"});
+    s.motionDict = fr.optionalDict("motion");
+    if (s.motionDict && !s.fixAll && !s.fixSkirt)
+    {
+        fr.fail
+        (
+            "motion",
+            "turns the fixed nodes, and there are none: set fixedNodes.all"
+            " or fixedNodes.skirt true"
+        );
+    }
+    fr.warnUnused(wordList{"skirt", "all", "motion"});
 }
 
 
@@ -879,6 +891,14 @@ void Foam::canopyStructure::build(const vector& defaultGravity)
         FUNCTION_NAME, "canopy_model_set_implicit_controls"
     );
     check(canopy_model_set_speed_limit(m, s.speedLimit), FUNCTION_NAME, "canopy_model_set_speed_limit");
+
+    if (s.motionDict)
+    {
+        motion_.reset(new prescribedRotation(*s.motionDict, m, payloadNode_));
+        Info<< "canopyStructure: ";
+        motion_->writeInfo(Info);
+        Info<< endl;
+    }
 
     if (s.guidePayload || s.guideApex)
     {
