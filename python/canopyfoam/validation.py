@@ -1562,10 +1562,10 @@ RUNS += [
 FORCED_TURN_START = 10.0
 FORCED_TURN = {"T10-turn10-T10": (10.0, 10.0), "T10-turn20-T10": (20.0, 10.0),
                "T10-turn10-T5": (10.0, 5.0)}
-# ... and at 20° over the periods 5, 7 and 15 s (reduced frequencies 0.34
-# to 1.0 about the free swing's 0.5): where does the damping change sign?
-FORCED_TURN.update({"T10-turn20-T%d" % t: (20.0, float(t))
-                    for t in (5, 7, 15)})
+# ... and at 20° over the periods 5 to 15 s (reduced frequencies 0.34 to
+# 1.0 about the free swing's 0.5): where does the damping change sign?
+FORCED_TURN.update({"T10-turn20-T%g" % t: (20.0, float(t))
+                    for t in (5, 7, 8.5, 12.5, 15)})
 FORCED_TURN_AXIS = (0.0, 1.0, 0.0)
 FORCED_TURN_END = 110.0
 FORCED_TURN_READ = 20.0
@@ -1755,7 +1755,8 @@ STUDIES = [
      "shape held rigid, 13 cells across D0 unless said, 6.66 m/s along the "
      "axis, from 10 s, to 110 s, read over 20-110 s)",
      ["T10-turn10-T5", "T10-turn10-T10", "T10-turn20-T5", "T10-turn20-T7",
-      "T10-turn20-T10", "T10-turn20-T15", "T10-turn20-T10-cpd20"]),
+      "T10-turn20-T8.5", "T10-turn20-T10", "T10-turn20-T12.5",
+      "T10-turn20-T15", "T10-turn20-T10-cpd20"]),
     ("incidence7ft", "7 ft flat circular canopy at incidence: its inflated "
      "shape held still in a tilted stream (the fluid side alone; 18 cells "
      "across D0, 6.22 m/s, to 8 s, read over 4-8 s)",
@@ -2773,17 +2774,19 @@ def forced_turn_notes(results):
     if len(sweep) > 2:
         md[-1] += (" At 20° over the periods %s s (ωD0/2U %s): %s. The "
                    "air feeds the turn in a band of frequencies about the "
-                   "free swing's, nil within its interval at 0.34 and 0.72 "
-                   "and damping at 1.0: not the monotone lag of a "
+                   "free swing's (ωD0/2U 0.5-0.6, f D0 / U = 0.16-0.19), "
+                   "nil within its interval at 0.34, 0.40 and 0.72 and "
+                   "damping at 1.0: not the monotone lag of a "
                    "quasi-steady air with a delay but a resonance. The "
-                   "band lies near the wake's own unsteadiness: the side "
-                   "force on the canopy held still at 0° (T10-tilt0, its "
-                   "spectrum over 5-30 s, resolution 0.04 Hz) peaks at "
-                   "about 0.08 Hz, f D0 / U = 0.13, against the forcing's "
-                   "0.10 Hz at T = 10 s; the turn at that frequency may "
-                   "lock the wake's shedding to it, as a bluff body's "
-                   "wake locks to its oscillation. That is a hypothesis "
-                   "the runs do not test yet." % (
+                   "band lies within the wake's own unsteadiness: the "
+                   "side force on the canopy held still at 0° (T10-tilt0, "
+                   "its spectrum over 5-30 s, resolution 0.04 Hz) has its "
+                   "peaks at 0.04-0.16 Hz (f D0 / U = 0.06-0.26, the "
+                   "largest at 0.08 Hz), the band at 0.10-0.12 Hz; a "
+                   "turn at such a frequency may lock the wake's "
+                   "shedding to it, as a bluff body's wake locks to its "
+                   "oscillation. That is a hypothesis the runs do not "
+                   "test yet." % (
                        ", ".join("%g" % t for t, _ in sweep),
                        ", ".join("%.2f" % f[r]["reducedFrequency"]
                                  for _, r in sweep),
@@ -2845,9 +2848,11 @@ def forced_turn_notes(results):
 
 
 def plot_forced_turn(name, title, results):
-    """The air's moment coefficient against the angle of turn, each forced
-    run's states in its interval with the fitted ellipse, in
-    FIG_DIR/name.png; its path relative to the report, or None."""
+    """Left: the air's moment coefficient against the angle of turn for
+    the runs at the free swing's period and at 5 s (the states in the
+    interval and the fitted ellipse); right: C_mq against the reduced
+    frequency for every forced run; in FIG_DIR/name.png, its path
+    relative to the report, or None."""
     curves = []
     for run, rec in results:
         a = rec and rec["analysis"]
@@ -2860,9 +2865,11 @@ def plot_forced_turn(name, title, results):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     os.makedirs(FIG_DIR, exist_ok=True)
-    fig, ax = plt.subplots(figsize=(7, 4.5))
+    fig, (ax, bx) = plt.subplots(1, 2, figsize=(11, 4.5))
     for run, a, f in curves:
         amplitude, period = FORCED_TURN[run.ident]
+        if period not in (5.0, 10.0) or amplitude != 20.0:
+            continue
         p = a["parameters"]
         d0, rho = p["nominalDiameter"]["value"], p["rho"]["value"]
         qsd = 0.5 * rho * TILT_T10_SPEED ** 2 * math.pi * d0 ** 2 / 4 * d0
@@ -2882,12 +2889,30 @@ def plot_forced_turn(name, title, results):
     ax.axhline(0.0, color="k", lw=0.8)
     ax.set_xlabel("angle of turn θ [°]")
     ax.set_ylabel("C_m about the payload, along the turn")
-    ax.set_title(textwrap.fill("The air's moment on the canopy turned "
-                               "about its payload (dots: the states "
-                               "written; lines: the fit; a loop run "
-                               "clockwise gives the turn energy)", 80),
+    ax.set_title(textwrap.fill("The air's moment against the angle (dots: "
+                               "the states written; lines: the fit; a "
+                               "loop run clockwise gives the turn energy)",
+                               60), fontsize=9)
+    ax.grid(True, alpha=0.3)
+    ax.legend(loc="best", fontsize=7)
+    for label, keep, marker in (
+            ("20°, 13 cells", lambda r, amp: amp == 20.0
+             and not r.endswith("-cpd20"), "o"),
+            ("10°, 13 cells", lambda r, amp: amp == 10.0, "s"),
+            ("20°, 20 cells", lambda r, amp: r.endswith("-cpd20"), "^")):
+        pts = sorted((f["reducedFrequency"], f["Cmq"], f["Cmq95"] or 0.0)
+                     for run, a, f in curves
+                     if keep(run.ident, FORCED_TURN[run.ident][0]))
+        if pts:
+            bx.errorbar([p[0] for p in pts], [p[1] for p in pts],
+                        yerr=[p[2] for p in pts], marker=marker,
+                        capsize=3, label=label)
+    bx.axhline(0.0, color="k", lw=0.8)
+    bx.set_xlabel("reduced frequency ω D0 / 2U")
+    bx.set_ylabel("C_mq (> 0: the air feeds the turn)")
+    bx.set_title("The rate coefficient against the frequency (± 95 %)",
                  fontsize=9)
-    return save_figure(fig, ax, name)
+    return save_figure(fig, bx, name)
 
 
 def swing_lines(results):
