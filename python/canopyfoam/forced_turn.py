@@ -32,6 +32,7 @@ import math
 import numpy as np
 
 from . import load_moment
+from . import report as rep
 from . import turn_fit
 
 
@@ -125,3 +126,39 @@ def analyse(case_dir, amplitude, period, start, axis, t0, t1, speed,
                times=[float(v) for v in times],
                moment=[float(v) for v in moment])
     return out
+
+
+def spectrum_peaks(t, forces, count=3, band=(0.02, 1.0)):
+    """The largest local maxima of the summed power spectrum of the
+    columns of forces (n x k) sampled at times t [s] (resampled uniformly
+    at the median spacing, mean removed, Hann window) in band [Hz]: a list
+    of (frequency [Hz], power over the largest's), largest first, and the
+    resolution 1/(duration) [Hz]."""
+    t = np.asarray(t, dtype=float)
+    forces = np.asarray(forces, dtype=float).reshape(len(t), -1)
+    dt = float(np.median(np.diff(t)))
+    tu = np.arange(t[0], t[-1], dt)
+    window = np.hanning(len(tu))
+    power = 0.0
+    for k in range(forces.shape[1]):
+        y = np.interp(tu, t, forces[:, k])
+        power = power + np.abs(np.fft.rfft((y - y.mean()) * window)) ** 2
+    freq = np.fft.rfftfreq(len(tu), dt)
+    inside = np.nonzero((freq >= band[0]) & (freq <= band[1]))[0]
+    peaks = [i for i in inside if 0 < i < len(power) - 1
+             and power[i] >= power[i - 1] and power[i] >= power[i + 1]]
+    peaks.sort(key=lambda i: -power[i])
+    top = power[peaks[0]] if peaks else 1.0
+    return ([(float(freq[i]), float(power[i] / top)) for i in peaks[:count]],
+            1.0 / (tu[-1] - tu[0]))
+
+
+def wake_peaks(case_dir, t0, t1, count=3, band=(0.02, 1.0)):
+    """spectrum_peaks of the force across the stream (canopy.dat's force_x
+    and force_y over [t0, t1]) on a canopy held still in a stream along
+    z: the frequencies of its wake's unsteadiness."""
+    series = rep.load_case(case_dir)
+    m = (series.t >= t0) & (series.t <= t1)
+    return spectrum_peaks(series.t[m],
+                          series.columns("force_x", "force_y")[m], count,
+                          band)

@@ -1597,6 +1597,22 @@ RUNS += [
         rest_state_of="T10-skirt-cpd13-m163")
     for ident, (amplitude, period) in sorted(FORCED_TURN.items())
 ]
+# ... and the same held still over as long (its wake's own frequencies,
+# from the spectrum of the force across the stream)
+FORCED_HELD = "T10-held0"
+RUNS += [
+    Run(FORCED_HELD, T10, "the extended skirt's inflated shape "
+        "(T10-skirt-cpd13-m163 at 80 s) held still in a %g m/s stream "
+        "along its axis, the payload held, 13 cells across D0, to %g s; "
+        "interval %g-%g s" % (TILT_T10_SPEED, FORCED_TURN_END,
+                              FORCED_TURN_READ, FORCED_TURN_END), CPD13,
+        [e for e in tilted_stream(TILT_T10_SPEED, 0)
+         if e[0] != "system/controlDict"]
+        + [(PROPS, "payload/fixed", "true"),
+           ("system/controlDict", "endTime", "%g" % FORCED_TURN_END)],
+        reference="T10", steady_start=FORCED_TURN_READ,
+        steady_end=FORCED_TURN_END, rest_state_of="T10-skirt-cpd13-m163")
+]
 # ... and at 20 cells across D0, 20° at the free swing's period, from the
 # 20-cell guided run's state (T10-skirt-cpd20 at 50 s), as
 # incidenceT10Resolution
@@ -1754,7 +1770,8 @@ STUDIES = [
      "oscillation: the air's stiffness and damping in pitch (its inflated "
      "shape held rigid, 13 cells across D0 unless said, 6.66 m/s along the "
      "axis, from 10 s, to 110 s, read over 20-110 s)",
-     ["T10-turn10-T5", "T10-turn10-T10", "T10-turn20-T5", "T10-turn20-T7",
+     ["T10-held0", "T10-turn10-T5", "T10-turn10-T10", "T10-turn20-T5",
+      "T10-turn20-T7",
       "T10-turn20-T8.5", "T10-turn20-T10", "T10-turn20-T12.5",
       "T10-turn20-T15", "T10-turn20-T10-cpd20"]),
     ("incidence7ft", "7 ft flat circular canopy at incidence: its inflated "
@@ -2294,6 +2311,13 @@ def result(run):
         except (load_moment.LoadMomentError, rep.ReportError, OSError,
                 RuntimeError, np.linalg.LinAlgError) as e:
             r["turnFit"] = {"note": str(e)}
+    if run.ident == FORCED_HELD:
+        try:
+            peaks, resolution = forced_turn.wake_peaks(
+                run.case_dir, r["steady"]["start"], r["steady"]["end"])
+            r["wakePeaks"] = {"peaks": peaks, "resolution": resolution}
+        except (rep.ReportError, OSError, ValueError, IndexError) as e:
+            r["wakePeaks"] = {"note": str(e)}
     if run.ident in FORCED_TURN:
         amplitude, period = FORCED_TURN[run.ident]
         p = r["parameters"]
@@ -2669,8 +2693,12 @@ def forced_turn_lines(records):
             "C_mq | work on the turn per period [J] | whole-interval R² | "
             "wall time on ranks |",
             "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    held = []
     for run, rec, why in records:
         a = rec and rec["analysis"]
+        if run.ident == FORCED_HELD:
+            held = wake_line(run, rec, why)
+            continue
         f = a and a.get("forcedTurn")
         amplitude, period = FORCED_TURN[run.ident]
         if not f or "a" not in f:
@@ -2704,7 +2732,26 @@ def forced_turn_lines(records):
                    "damping: the air does the work π c ω A² on the turn in "
                    "each period. C_ma = a / (q S0 D0), C_mq = c / (q S0 D0 "
                    "· D0/2U) on the stream's q = ρU²/2 and S0 = π D0²/4."
-                   % FORCED_TURN_START, ""]
+                   % FORCED_TURN_START, ""] + held
+
+
+def wake_line(run, rec, why):
+    """The held reference run's wake frequencies (forced_turn.wake_peaks),
+    as a paragraph."""
+    a = rec and rec["analysis"]
+    w = a and a.get("wakePeaks")
+    if not w or "peaks" not in w:
+        return ["Held still (%s, the same set-up without the turn): %s."
+                % (run.ident, why if rec is None else
+                   (w or {}).get("note", rec["state"])), ""]
+    d0 = a["parameters"]["nominalDiameter"]["value"]
+    return ["Held still (%s, the same set-up without the turn, over its "
+            "interval): the spectrum of the force across the stream "
+            "(python/canopyfoam/forced_turn.py wake_peaks) has its largest "
+            "peaks at %s (f D0 / U; relative power), resolution %.3f Hz."
+            % (run.ident, ", ".join(
+                "%.3f Hz (%.2f; %.2g)" % (f, f * d0 / TILT_T10_SPEED, p)
+                for f, p in w["peaks"]), w["resolution"]), ""]
 
 
 def forced_stiffness_inertia(results):
@@ -2732,6 +2779,46 @@ def forced_stiffness_inertia(results):
         out[amplitude] = (float(coef[0]), float(coef[1]),
                           sorted(r for _, _, r in pts))
     return out
+
+
+def wake_comparison(results, band=(0.099, 0.117)):
+    """The sentence comparing the band of negative damping (band [Hz]:
+    ωD0/2U 0.50-0.59 at 6.66 m/s) with the held run's wake frequencies
+    (its three largest peaks), or a full stop without them."""
+    for run, rec in results:
+        a = rec and rec["analysis"]
+        w = a and run.ident == FORCED_HELD and a.get("wakePeaks")
+        if w and w.get("peaks"):
+            peaks = w["peaks"][:3]
+            res = w["resolution"]
+            listed = ", ".join("%.3f Hz (f D0 / U = %.2f, power %.2f)"
+                               % (f, f * 10.7 / TILT_T10_SPEED, p)
+                               for f, p in peaks)
+            inside = [f for f, _ in peaks if band[0] <= f <= band[1]]
+            near = [(k, f) for k, (f, _) in enumerate(peaks)
+                    if band[0] - res <= f <= band[1] + res]
+            if inside:
+                verdict = ("the band lies at the wake's peak at %.3f Hz: a "
+                           "turn at the wake's own frequency may lock its "
+                           "shedding to the motion and be fed by it, as a "
+                           "bluff body's wake does; the runs do not show "
+                           "the lock" % inside[0])
+            elif near:
+                verdict = ("the band lies within one resolution of the "
+                           "peak at %.3f Hz (the %s largest), not at the "
+                           "largest: a lock of the turn to that mode of the "
+                           "wake is possible, not shown, and the band's "
+                           "cause stays open" % (
+                               near[0][1], ("", "second ", "third ")[
+                                   near[0][0]].strip() or "first"))
+            else:
+                verdict = ("the band lies beside them, so the held wake's "
+                           "own frequencies do not explain it, and its "
+                           "cause stays open")
+            return ("; the canopy held still (%s) has the largest peaks of "
+                    "its side force's spectrum at %s, resolution %.3f Hz: "
+                    "%s." % (run.ident, listed, res, verdict))
+    return "."
 
 
 def forced_turn_notes(results):
@@ -2777,20 +2864,13 @@ def forced_turn_notes(results):
                    "free swing's (ωD0/2U 0.5-0.6, f D0 / U = 0.16-0.19), "
                    "nil within its interval at 0.34, 0.40 and 0.72 and "
                    "damping at 1.0: not the monotone lag of a "
-                   "quasi-steady air with a delay but a resonance. The "
-                   "band lies within the wake's own unsteadiness: the "
-                   "side force on the canopy held still at 0° (T10-tilt0, "
-                   "its spectrum over 5-30 s, resolution 0.04 Hz) has its "
-                   "peaks at 0.04-0.16 Hz (f D0 / U = 0.06-0.26, the "
-                   "largest at 0.08 Hz), the band at 0.10-0.12 Hz; a "
-                   "turn at such a frequency may lock the wake's "
-                   "shedding to it, as a bluff body's wake locks to its "
-                   "oscillation. That is a hypothesis the runs do not "
-                   "test yet." % (
+                   "quasi-steady air with a delay but a resonance, at "
+                   "0.10-0.12 Hz (f D0 / U = 0.16-0.19)%s" % (
                        ", ".join("%g" % t for t, _ in sweep),
                        ", ".join("%.2f" % f[r]["reducedFrequency"]
                                  for _, r in sweep),
-                       ", ".join(cmq(r) for _, r in sweep)))
+                       ", ".join(cmq(r) for _, r in sweep),
+                       wake_comparison(results)))
     fits = forced_stiffness_inertia(results)
     other = [("%g°: k = %.0f N m, -i = %.0f kg m² (%s)"
               % (amp, kk, -ii, ", ".join(rr)))

@@ -18,6 +18,11 @@ Prints one PASS/FAIL line per check; exits 1 if any fails.
    per-period means lie within their 95 % intervals of the truth and the
    intervals are not empty; fewer than 8 states in the interval give
    None.
+4. spectrum_peaks: two force components carrying 0.10 Hz (amplitude 2)
+   and 0.30 Hz (amplitude 1) over 100 s sampled unevenly about 0.05 s:
+   the two largest peaks lie within one resolution (0.01 Hz) of 0.10 and
+   0.30 Hz, the second's power a quarter of the first's (0.15-0.35: the
+   window's leakage between bins), and the resolution is 1/100 Hz.
 """
 
 import math
@@ -120,5 +125,21 @@ try:
     check("too few states give None", o is None, "%s" % o)
 finally:
     shutil.rmtree(tmp)
+
+# 4. the spectrum's peaks
+rng = np.random.default_rng(7)
+ts = np.cumsum(0.05 + 0.01 * rng.random(2000))
+ts = ts[ts <= ts[0] + 100.0]
+fs = np.column_stack([2 * np.sin(2 * math.pi * 0.1 * ts) +
+                      np.sin(2 * math.pi * 0.3 * ts + 0.4),
+                      2 * np.cos(2 * math.pi * 0.1 * ts)
+                      + np.cos(2 * math.pi * 0.3 * ts)])
+peaks, resolution = forced_turn.spectrum_peaks(ts, fs)
+check("spectrum: peaks at 0.10 and 0.30 Hz, power ratio about 1/4",
+      abs(peaks[0][0] - 0.1) <= resolution and
+      abs(peaks[1][0] - 0.3) <= resolution and
+      0.15 <= peaks[1][1] <= 0.35 and abs(resolution - 0.01) < 2e-4,
+      "%s, resolution %.4f Hz" % ([(round(f, 4), round(p, 3))
+                                   for f, p in peaks[:2]], resolution))
 
 finish()
