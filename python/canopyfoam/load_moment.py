@@ -130,6 +130,8 @@ def analyse(case_dir, t0=-math.inf, t1=math.inf, stabiliser=None,
                                       triangles)
                 added = float(stabiliser["mass"]) * third
             others = np.arange(len(groups)) != payload[0]
+            if gravity is not None:
+                gravity = np.asarray(gravity, dtype=float)
             for name in names:
                 step = f["steps"][name]
                 t = float(step.attrs["time"])
@@ -143,12 +145,12 @@ def analyse(case_dir, t0=-math.inf, t1=math.inf, stabiliser=None,
                 forces.append(force)
                 moments.append(moment)
                 if gravity is not None:
-                    gravity = np.asarray(gravity, dtype=float)
                     weights.append(np.cross(
                         x[others] - p,
                         node_mass[others][:, None] * gravity).sum(axis=0))
                 if added is not None:
-                    _, normal = node_areas(x, triangles)
+                    normal = node_areas(x, triangles)[1] \
+                        if stabiliser["direction"] == "normal" else None
                     fb = balance_forces(added, normal, step["acc"][:],
                                         stabiliser["direction"])
                     balances.append(np.cross(x - p, fb).sum(axis=0))

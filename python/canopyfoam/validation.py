@@ -2337,7 +2337,7 @@ def stabiliser_settings(run):
     """The run's added-mass stabiliser as load_moment.analyse takes it
     ({"mass", "direction"}), None without one; RuntimeError for a kind
     load_moment cannot rebuild (distribution consistent, filter
-    triangleMean)."""
+    triangleMean, balance stepMean)."""
     path = os.path.join(run.case_dir, PROPS)
     try:
         mass = float(foam_get(path, "coupling/addedMass/mass"))
@@ -2346,16 +2346,19 @@ def stabiliser_settings(run):
     settings = {"mass": mass, "direction": "normal"}
     for entry, default in (("direction", "normal"), ("distribution",
                                                       "lumped"),
-                           ("filter", "none")):
+                           ("filter", "none"), ("balance", "stepMean")):
         try:
             settings[entry] = foam_get(path, "coupling/addedMass/" + entry)
         except RuntimeError:
             settings[entry] = default
-    if settings["distribution"] != "lumped" or settings["filter"] != "none":
+    if settings["distribution"] != "lumped" or settings["filter"] != "none" \
+            or settings["balance"] != "endOfStep":
         raise RuntimeError("the added-mass stabiliser's distribution %s / "
-                           "filter %s: its balance is not rebuilt (lumped, "
-                           "no filter only)" % (settings["distribution"],
-                                                settings["filter"]))
+                           "filter %s / balance %s: its balance is rebuilt "
+                           "from the written (end-of-step) accelerations "
+                           "only for lumped, no filter, endOfStep" % (
+                               settings["distribution"], settings["filter"],
+                               settings["balance"]))
     return {"mass": mass, "direction": settings["direction"]}
 
 
@@ -2781,10 +2784,10 @@ def forced_stiffness_inertia(results):
     return out
 
 
-def wake_comparison(results, band=(0.099, 0.117)):
-    """The sentence comparing the band of negative damping (band [Hz]:
-    ωD0/2U 0.50-0.59 at 6.66 m/s) with the held run's wake frequencies
-    (its three largest peaks), or a full stop without them."""
+def wake_comparison(results, band, d0):
+    """The sentence comparing the band of negative damping (band [Hz]) of
+    a canopy of nominal diameter d0 [m] with the held run's wake
+    frequencies (its three largest peaks), or a full stop without them."""
     for run, rec in results:
         a = rec and rec["analysis"]
         w = a and run.ident == FORCED_HELD and a.get("wakePeaks")
@@ -2792,7 +2795,7 @@ def wake_comparison(results, band=(0.099, 0.117)):
             peaks = w["peaks"][:3]
             res = w["resolution"]
             listed = ", ".join("%.3f Hz (f D0 / U = %.2f, power %.2f)"
-                               % (f, f * 10.7 / TILT_T10_SPEED, p)
+                               % (f, f * d0 / TILT_T10_SPEED, p)
                                for f, p in peaks)
             inside = [f for f, _ in peaks if band[0] <= f <= band[1]]
             near = [(k, f) for k, (f, _) in enumerate(peaks)
@@ -2830,7 +2833,9 @@ def forced_turn_notes(results):
             f[run.ident] = a["forcedTurn"]
     if "T10-turn10-T10" not in f:
         return []
-    d0, u, rho = 10.7, TILT_T10_SPEED, 1.2
+    p = dict(results)[RUN_BY_ID["T10-turn10-T10"]]["analysis"]["parameters"]
+    d0, rho = p["nominalDiameter"]["value"], p["rho"]["value"]
+    u = TILT_T10_SPEED
     qsd = 0.5 * rho * u ** 2 * math.pi * d0 ** 2 / 4 * d0
 
     def cmq(ident):
@@ -2859,18 +2864,33 @@ def forced_turn_notes(results):
     sweep = sorted((FORCED_TURN[r][1], r) for r in f
                    if FORCED_TURN[r][0] == 20.0 and not r.endswith("-cpd20"))
     if len(sweep) > 2:
-        md[-1] += (" At 20° over the periods %s s (ωD0/2U %s): %s. The "
-                   "air feeds the turn in a band of frequencies about the "
-                   "free swing's (ωD0/2U 0.5-0.6, f D0 / U = 0.16-0.19), "
-                   "nil within its interval at 0.34, 0.40 and 0.72 and "
-                   "damping at 1.0: not the monotone lag of a "
-                   "quasi-steady air with a delay but a resonance, at "
-                   "0.10-0.12 Hz (f D0 / U = 0.16-0.19)%s" % (
-                       ", ".join("%g" % t for t, _ in sweep),
-                       ", ".join("%.2f" % f[r]["reducedFrequency"]
-                                 for _, r in sweep),
-                       ", ".join(cmq(r) for _, r in sweep),
-                       wake_comparison(results)))
+        # each reduced frequency by what its 95 % interval says
+        feeds = [f[r]["reducedFrequency"] for _, r in sweep
+                 if f[r]["Cmq"] - f[r]["Cmq95"] > 0]
+        damps = [f[r]["reducedFrequency"] for _, r in sweep
+                 if f[r]["Cmq"] + f[r]["Cmq95"] < 0]
+        nil = [f[r]["reducedFrequency"] for _, r in sweep
+               if abs(f[r]["Cmq"]) <= f[r]["Cmq95"]]
+        md[-1] += (" At 20° over the periods %s s (ωD0/2U %s): %s." % (
+            ", ".join("%g" % t for t, _ in sweep),
+            ", ".join("%.2f" % f[r]["reducedFrequency"] for _, r in sweep),
+            ", ".join(cmq(r) for _, r in sweep)))
+        if feeds:
+            band = (min(feeds) * u / (math.pi * d0),
+                    max(feeds) * u / (math.pi * d0))
+            md[-1] += (" The air feeds the turn at ωD0/2U %s (%.3f-%.3f "
+                       "Hz, f D0 / U = %.2f-%.2f), is nil within its "
+                       "interval at %s and damps at %s: not the monotone "
+                       "lag of a quasi-steady air with a delay but a "
+                       "resonance%s" % (
+                           ", ".join("%.2f" % v for v in sorted(feeds)),
+                           band[0], band[1], band[0] * d0 / u,
+                           band[1] * d0 / u,
+                           ", ".join("%.2f" % v for v in sorted(nil))
+                           or "none",
+                           ", ".join("%.2f" % v for v in sorted(damps))
+                           or "none",
+                           wake_comparison(results, band, d0)))
     fits = forced_stiffness_inertia(results)
     other = [("%g°: k = %.0f N m, -i = %.0f kg m² (%s)"
               % (amp, kk, -ii, ", ".join(rr)))

@@ -132,15 +132,8 @@ Foam::prescribedRotation::prescribedRotation
             nodes.append(i);
         }
     }
-    if (nodes.empty())
-    {
-        scopedEntryReader(dict, "fixedNodes.motion").fail
-        (
-            "type",
-            "turns the fixed nodes, and there are none besides the pivot:"
-            " set fixedNodes.all or fixedNodes.skirt true"
-        );
-    }
+    // (canopyStructure reads fixedNodes.motion only with fixedNodes.all
+    // or .skirt, which fix cloth nodes: the list is never empty)
     nodes_.transfer(nodes);
 }
 
