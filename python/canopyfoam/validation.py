@@ -3712,6 +3712,36 @@ def window_change_lines(results, what):
     return lines
 
 
+def longer_run_lines(results, ident, shorter):
+    """A run made longer to reach its steady descent (ident) against the
+    shorter run of the same set-up, from their records, as markdown: each
+    one's mean descent with its 95 % interval, its drift across its
+    interval (the linear fit's change; report.py), C_D0 and Dp/D0."""
+    recs = dict((run.ident, r) for run, r in results)
+    runs = dict((run.ident, run) for run, _ in results)
+
+    def describe(i):
+        a = (recs.get(i) or {}).get("analysis")
+        if not a:
+            return None
+        v, st = a["descentVelocity"], a["steady"]
+        d0 = a["parameters"]["nominalDiameter"]["value"]
+        return ("%.2f ± %.2f m/s over %.3g-%.3g s (drift %+.2f m/s across "
+                "it%s), C_D0 %.3f, Dp/D0 %.2f" % (
+                    v["mean"], v.get("ci95") or float("nan"), st["start"],
+                    st["end"], v.get("drift") or 0.0,
+                    ": drifting" if st.get("warning") else "",
+                    a["dragCoefficient"]["weightBalance"],
+                    a["projectedDiameter"]["mean"] / d0))
+    long_text, short_text = describe(ident), describe(shorter)
+    if long_text is None:
+        return ["%s (%s) is not run yet (`%s`)." % (
+            ident, runs[ident].label, runs[ident].command()), ""]
+    return ["%s (%s): %s; %s gave %s." % (
+        ident, runs[ident].label.split(";")[0], long_text, shorter,
+        short_text or "nothing"), ""]
+
+
 def cross_free_lines(results, ident="cross-fullLoad-20s"):
     """What the cross in free flight shows against its published
     stability (issue 34 item 5), from its record, as markdown."""
@@ -5217,6 +5247,8 @@ def write_report():
                    "silhouette 0.77 D0). Both at one resolution (13 cells "
                    "across D0): no GCI; the T-10's resolution study "
                    "(resolutionT10Skirt) is the only large canopy's.", ""]
+            md += longer_run_lines(results, "G11-cpd13-120s",
+                                   "G11-cpd13-60s")
         if name == "domainT10SkirtLong":
             md += ["At 13 cells across D0 in steady descent (50-80 s) the "
                    "box's width moves C_D0 from 0.709 (5.6 D0) to 0.690 "
