@@ -5249,6 +5249,10 @@ def write_report():
                    "(resolutionT10Skirt) is the only large canopy's.", ""]
             md += longer_run_lines(results, "G11-cpd13-120s",
                                    "G11-cpd13-60s")
+            md += ["Against solid flat circular canopies' C_D0 0.75-0.80 "
+                   "and Dp/D0 0.67-0.70 (Knacke, Table 5-1) the G-11 run "
+                   "to its steady descent, like the C-9, opens wider and "
+                   "drags more.", ""]
         if name == "domainT10SkirtLong":
             md += ["At 13 cells across D0 in steady descent (50-80 s) the "
                    "box's width moves C_D0 from 0.709 (5.6 D0) to 0.690 "
