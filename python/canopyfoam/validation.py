@@ -3760,8 +3760,9 @@ def cross_free_lines(results, ident="cross-fullLoad-20s"):
             "full-load scheme every other tutorial uses leaves the "
             "vertical at %.1f s%s; over %.1f-%.1f s its suspension "
             "reaches %.0f° (rms %.0f°, mean %.0f°) and the payload whirls "
-            "at up to %.1f m/s across gravity, %s. Published cross canopies oscillate by 0° "
-            "to ±3° (Knacke, Table 5-1): the model's cross is not "
+            "at up to %.1f m/s across gravity, %s. Published cross "
+            "canopies oscillate by 0° to ±3° (Knacke, Table 5-1): the "
+            "model's cross is not "
             "stable, a finding against the published class as the "
             "T-10's is. Its payload is as heavy for its canopy as the "
             "7 ft canopy's, which departs too (σ D0 / V 0.70) but settles, "
@@ -3770,7 +3771,8 @@ def cross_free_lines(results, ident="cross-fullLoad-20s"):
                 d0, ratio, sw["onset"],
                 "" if rate is None else " (σ = %.2f /s, σ D0 / V = %.2f)"
                 % (rate, rate * d0 / growth["descent"]),
-                a["steady"]["start"], a["steady"]["end"], sw["angleMax"], sw["angleRms"], sw["angleMean"],
+                a["steady"]["start"], a["steady"]["end"], sw["angleMax"],
+                sw["angleRms"], sw["angleMean"],
                 a["horizontalVelocity"]["max"],
                 "to the run's end" if rec.get("complete") else
                 "until the run stops at %.1f s (the canopy past the finest "
@@ -5345,9 +5347,8 @@ def write_report():
                    "(wall times above); at that rate, with the time step "
                    "falling as the cell (the 27-cell run took about 3 800 "
                    "steps), 12 s at 40 cells needs 3.5-5 hours of both "
-                   "cores without interruption, more than one working "
-                   "session on this machine holds (its runs do not "
-                   "survive it). It is not run.", ""]
+                   "cores of the 2-core machine without interruption. It "
+                   "is not run yet.", ""]
         if name == "domain7ft":
             md += ["The three runs are made with Aitken's relaxation "
                    "moving the stabiliser's balance with its factor. "
