@@ -3861,12 +3861,14 @@ def cross_resolution_lines(results, span=1.27, arm_width=0.335):
                         sw["angleMax"], sw["angleRms"], v["mean"],
                         v.get("ci95") or float("nan"), st["start"],
                         st["end"]))
-    lines = ["The cross's 0.335 m arms, and the gaps between them through "
-             "which a cross canopy vents, span few cells at 11 across the "
-             "span: the same free flight at 11, 16 and 22 cells across the "
-             "span. σ: the payload's speed across gravity grows as exp(σ t) "
-             "(report.py, swing_growth: from 1 % to 20 % of the descent); "
-             "the onset: the suspension past 5° from the vertical.", "",
+    lines = ["The cross's %g m arms, and the gaps between them through "
+             "which a cross canopy vents, span few cells on a coarse mesh: "
+             "the same free flight at %s cells across the span. σ: the "
+             "payload's speed across gravity grows as exp(σ t) "
+             "(report.py, swing_growth: from 1 %% to 20 %% of the descent); "
+             "the onset: the suspension past 5° from the vertical."
+             % (arm_width, ", ".join("%g" % n for n in sorted(set(
+                 cells_per_diameter(r) for r, _ in results)))), "",
              "| run | cells across an arm | ranks | onset | σ | σ D0 / V | "
              "suspension largest / rms over the interval | descent [m/s] "
              "(interval) |", "|---|---|---|---|---|---|---|---|"] + rows + [""]
@@ -5477,10 +5479,11 @@ def write_report():
                    "coupling iterations at 7.3 s each (2-4 a step while "
                    "the canopy opens). By 0.33 s, at 2.9 m/s, the Courant "
                    "number already held the step to 0.0049 s. In steady "
-                   "descent the 27-cell run's mean step was 0.0036 s at "
-                   "1.03 iterations a step; at 40 cells the step falls to "
-                   "about 0.0024 s, so a simulated second costs about 7.3 "
-                   "× 1.03 / 0.0024 ≈ 3 100 s and 12 s about 10 hours of "
+                   "descent (5-12 s) the 27-cell run's mean step was "
+                   "0.0035 s (2018 steps) at 1.03 iterations a step; at 40 "
+                   "cells the step falls to about 0.0023 s, so a simulated "
+                   "second costs about 7.3 × 1.03 / 0.0023 ≈ 3 200 s and "
+                   "12 s about 10-11 hours of "
                    "both cores of the 2-core machine (more while the "
                    "canopy opens). It is not run yet.", ""]
         if name == "domain7ft":
