@@ -1269,7 +1269,7 @@ RUNS += [
     Run("cross-default", "parachutes/cross", "the tutorial's default: flat "
         "start, box 8 span wide, 22 cells across the span, to 4 s"),
     Run("cross-folded-default", "parachutes/crossFolded", "the tutorial's "
-        "default: folded start, box 8 span wide, 11 cells across the span, "
+        "default: folded start, box 8 span wide, 22 cells across the span, "
         "to 4 s"),
 ]
 
@@ -1764,8 +1764,8 @@ STUDIES = [
      "compression as in tension, read over 5-8 s)",
      ["7ft-w5.6", "7ft-stiff", "7ft-w11"]),
     ("tutorialsWide", "The other tutorials on the wide box (8 D0, nested "
-     "refinement, 11 cells across D0; the T-10's default 13, the cross's "
-     "22 across its span)",
+     "refinement, 11 cells across D0; the T-10's default 13, the crosses' "
+     "22 across their span)",
      ["T10-skirt-cpd13-default", "T10-skirt-default", "T10-default", "T10-m163-default", "G11-default",
       "G11-folded-default", "C9-default", "cross-default",
       "cross-folded-default"]),
@@ -1870,6 +1870,10 @@ STUDIES = [
      "s; the 11-cell set-up also on 1 rank to 20 s)",
      ["cross-cpd11-8s", "cross-cpd16-8s", "cross-cpd22-8s",
       "cross-fullLoad-20s"]),
+    ("crossStarts", "Cross parachute from the flat and the folded start "
+     "on the tutorials' set-up (the full-load scheme, 22 cells across the "
+     "span, to 4 s, read over the last third)",
+     ["cross-default", "cross-folded-default"]),
     ("turbulence7ftConverged", "7 ft canopy: laminar against LES (WALE, "
      "LUST convection) on the converged set-up: the main job's over 10-40 "
      "s and the resolution study's finest level (27 cells across D0) over "
@@ -3825,6 +3829,58 @@ def cross_free_lines(results, ident="cross-fullLoad-20s"):
                 "refinement, the coupling unconverged)" % end, cells), ""]
 
 
+def cross_starts_lines(results):
+    """Whether the cross's flat and folded starts reach the same descent
+    (study crossStarts; the seed's observation for its starts, §5.7), from
+    the records, as markdown: per run the descent over its interval with
+    its 95 % interval and drift, C_D on the cloth's area, Dp/D0 and the
+    suspension's largest and rms angle; then the two descents' difference
+    against their combined interval, and whether either still drifts by
+    more than its interval (then the runs are too short to tell)."""
+    rows, done = [], []
+    for run, rec in results:
+        a = rec and rec.get("analysis")
+        if not a or not a.get("descentVelocity"):
+            rows.append("| %s | not run (`%s`) | | | | |"
+                        % (run.ident, run.command()))
+            continue
+        v, st, sw = a["descentVelocity"], a["steady"], a.get("swing") or {}
+        d0 = a["parameters"]["nominalDiameter"]["value"]
+        dp = a["projectedDiameter"]["mean"] / d0
+        cd = a["dragCoefficient"]["weightBalance"]
+        done.append((run, v))
+        rows.append("| %s | %.2f ± %.2f (%.3g-%.3g s) | %+.2f | %.2f | "
+                    "%.2f | %s |" % (
+                        run.ident, v["mean"], v["ci95"], st["start"],
+                        st["end"], v["drift"], cd, dp,
+                        "%.1f° / %.1f°" % (sw["angleMax"], sw["angleRms"])
+                        if sw.get("angleMax") is not None else "—"))
+    lines = ["The seed finds that its starts reach the same state (§5.7). "
+             "The descent over each run's interval with its 95 % interval "
+             "(from the series' autocorrelation) and its drift across the "
+             "interval; C_D on the cloth's area; the suspension's angle to "
+             "the vertical.", "",
+             "| run | descent [m/s] (interval) | drift [m/s] | C_D | Dp/D0 "
+             "| suspension largest / rms |", "|---|---|---|---|---|---|"] \
+        + rows + [""]
+    if len(done) < 2:
+        return lines + ["The comparison needs both starts run.", ""]
+    (r1, v1), (r2, v2) = done[0], done[1]
+    diff = v2["mean"] - v1["mean"]
+    both = math.hypot(v1["ci95"], v2["ci95"])
+    moving = [r.ident for r, v in done if abs(v["drift"]) > v["ci95"]]
+    verdict = ("The folded start descends %+.2f m/s from the flat one's, "
+               "%s their combined interval (± %.2f m/s)." % (
+                   diff, "within" if abs(diff) <= both else "beyond", both))
+    if moving:
+        verdict += (" %s still drift%s by more than %s over the "
+                    "reading: the runs are too short to say whether the "
+                    "two starts reach the same state." % (
+                        " and ".join(moving), "s" if len(moving) == 1
+                        else "", "its interval" if len(moving) == 1 else "their intervals"))
+    return lines + [verdict, ""]
+
+
 def cross_resolution_lines(results, span=1.27, arm_width=0.335):
     """The cross's departure from the vertical descent at each resolution
     (study crossResolution, issue 34 item 5), from the records, as
@@ -5366,6 +5422,8 @@ def write_report():
             md += cross_free_lines(results)
         if name == "crossResolution":
             md += cross_resolution_lines(results)
+        if name == "crossStarts":
+            md += cross_starts_lines(results)
         if name == "steadyLarge":
             md += ["The C-9 (28 ft flat circular, 100 kg) on the guide "
                    "wire descends at 5.75 ± 0.07 m/s over 30-60 s, still "

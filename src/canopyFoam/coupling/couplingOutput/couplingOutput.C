@@ -89,7 +89,9 @@ Foam::couplingOutput::couplingOutput
     }
     // The parachute's nominal diameter as its specification states it
     // (canopy.nominalDiameter, required with an extended skirt, whose rim
-    // is not it), else the canopy's diameter, else a disc of its area
+    // is not it), else the canopy's diameter, else a disc of its area as
+    // built: the nominal area, which a fold or the inflated shape reached
+    // by a restart does not change
     const dictionary canopyDict(structure.dict().subOrEmptyDict("canopy"));
     nominalDiameter_ = canopyDict.lookupOrDefault<scalar>
     (
@@ -97,7 +99,10 @@ Foam::couplingOutput::couplingOutput
         canopyDict.lookupOrDefault<scalar>
         (
             "diameter",
-            Foam::sqrt(4*structure.canopyArea()/constant::mathematical::pi)
+            Foam::sqrt
+            (
+                4*structure.builtCanopyArea()/constant::mathematical::pi
+            )
         )
     );
 }

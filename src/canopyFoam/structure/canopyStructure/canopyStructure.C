@@ -126,6 +126,7 @@ Foam::canopyStructure::canopyStructure
     lastWriteTime_(0),
     haveLastWrite_(false),
     warnedTime_(false),
+    builtCanopyArea_(0),
     initialVelocity_(Zero),
     nodalForcesChanged_(false),
     motion_(nullptr)
@@ -196,6 +197,7 @@ Foam::canopyStructure::canopyStructure
     lastWriteTime_(0),
     haveLastWrite_(false),
     warnedTime_(false),
+    builtCanopyArea_(0),
     initialVelocity_(Zero),
     nodalForcesChanged_(false),
     motion_(nullptr)

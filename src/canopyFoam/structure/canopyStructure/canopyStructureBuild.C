@@ -922,6 +922,10 @@ void Foam::canopyStructure::build(const vector& defaultGravity)
         );
     }
 
+    // The cloth's area as built, before an initial state (e.g. a fold)
+    // or a restart moves it: the nominal area
+    builtCanopyArea_ = canopyArea();
+
     if (debug)
     {
         Info<< "canopyStructure: " << s.type << " canopy, " << nNodes()
