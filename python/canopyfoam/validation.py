@@ -3865,7 +3865,7 @@ def cross_starts_lines(results):
         + rows + [""]
     if len(done) < 2:
         return lines + ["The comparison needs both starts run.", ""]
-    (r1, v1), (r2, v2) = done[0], done[1]
+    v1, v2 = done[0][1], done[1][1]
     diff = v2["mean"] - v1["mean"]
     both = math.hypot(v1["ci95"], v2["ci95"])
     moving = [r.ident for r, v in done if abs(v["drift"]) > v["ci95"]]
@@ -3873,11 +3873,12 @@ def cross_starts_lines(results):
                "%s their combined interval (± %.2f m/s)." % (
                    diff, "within" if abs(diff) <= both else "beyond", both))
     if moving:
+        one = len(moving) == 1
         verdict += (" %s still drift%s by more than %s over the "
                     "reading: the runs are too short to say whether the "
                     "two starts reach the same state." % (
-                        " and ".join(moving), "s" if len(moving) == 1
-                        else "", "its interval" if len(moving) == 1 else "their intervals"))
+                        " and ".join(moving), "s" if one else "",
+                        "its interval" if one else "their intervals"))
     return lines + [verdict, ""]
 
 
