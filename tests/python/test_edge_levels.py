@@ -1,0 +1,93 @@
+"""test_edge_levels.py — known-answer tests of the fabric's edge levels compared in python/canopyfoam/validation.py (edge_levels_lines, studies edgeLength7ft and edgeLength7ftLong).
+
+Run as:  /usr/bin/python3 tests/python/test_edge_levels.py   (./Alltest edge_levels)
+Prints one PASS/FAIL line per check; exits 1 if any fails.
+
+Synthetic records, D0 = 1 m, 10 cells across D0: an edge of 1.5 finest
+cells is 0.150 m. Every level descends at 6.0 ± 0.03 m/s, so C_D0's
+95 % relative half-width is 2 x 0.03 / 6 = 1.0 % and a pair's combined
+one hypot(1, 1) = 1.4 %. The levels are given fine first and listed
+coarse first. C_D0 0.70, 0.80, 0.84 (edge 1.5, 1.0, 0.667): +14.3 % then
++5.0 %, both beyond 1.4 %, ratio 0.35: converging. 0.70, 0.80, 0.70:
++14.3 % then -12.5 %: oscillating. 0.70, 0.80, 0.96: +20.0 % after
++14.3 %, ratio 1.40: diverging. 0.70, 0.705, 0.80: the first change
+(+0.7 %) lies within 1.4 %, so no verdict on the order. A level not run
+is named with its command; one level alone gives no changes.
+"""
+
+from checks import check, finish
+from canopyfoam import validation as v
+
+
+def run(ident, edge):
+    return v.Run(ident, v.SEVEN, "synthetic", edits=[
+        (v.MESH_DICT, "cellsPerDiameter", "10"),
+        (v.MESH_DICT, "edgeLengthPerCell", "%g" % edge)])
+
+
+def record(cd, resolved=True):
+    return {"complete": True, "ranks": 2,
+            "analysis": {"parameters": {"nominalDiameter": {"value": 1.0}},
+                         "descentVelocity": {"mean": 6.0, "ci95": 0.03},
+                         "dragCoefficient": {"weightBalance": cd},
+                         "projectedDiameter": {"mean": 0.8},
+                         "shape": {"available": True,
+                                   "skirtRadiusMean": 0.35,
+                                   "rings": [{"foldedFraction": 0.0},
+                                             {"foldedFraction": 0.2}]},
+                         "breathing": {"resolved": resolved,
+                                       "frequency": 1.2,
+                                       "amplitude": 0.04}}}
+
+
+levels = [run("t-fine", 0.667), run("t-medium", 1.0), run("t-coarse", 1.5)]
+
+
+def lines(*cds):
+    recs = [None if c is None else record(c) for c in cds]
+    return "\n".join(v.edge_levels_lines(list(zip(levels, recs))))
+
+
+text = lines(0.84, 0.80, 0.70)
+rows = text.splitlines()
+check("coarse first: edge, metres, C_D0 ± half-width, Dp/D0, skirt, outer "
+      "ring, breathing",
+      rows[2] == "| 1.5 | 0.150 | t-coarse | 0.700 ± 1.0 % | 0.800 | 0.350 "
+      "| 20 % | 1.20 Hz, 4.0 cm |" and "| 0.667 | 0.067 | t-fine |" in rows[4],
+      rows[2])
+check("each change against the combined interval",
+      "- 1.5 to 1 finest cells: C_D0 +14.3 % (beyond the combined ± 1.4 %)."
+      in text and "- 1 to 0.667 finest cells: C_D0 +5.0 % (beyond" in text,
+      [r for r in rows if r.startswith("- ")])
+check("shrinking changes converge",
+      "moves C_D0 less than the one before (ratio 0.35): the levels "
+      "converge" in text, rows[-2])
+
+text = lines(0.70, 0.80, 0.70)
+check("a change of sign oscillates",
+      "opposite directions: the levels oscillate" in text,
+      text.splitlines()[-2])
+
+text = lines(0.96, 0.80, 0.70)
+check("growing changes diverge",
+      "+20.0 %" in text and "(ratio 1.40): the levels diverge" in text,
+      text.splitlines()[-2])
+
+text = lines(0.80, 0.705, 0.70)
+check("a change within its interval: no verdict",
+      "(within the combined ± 1.4 %)" in text
+      and "1.5 to 1 lies within the pair's interval" in text
+      and "converge or oscillate is not told apart" in text,
+      text.splitlines()[-2])
+
+text = lines(None, 0.80, 0.70)
+check("a level not run is named with its command",
+      "| 0.667 | — | t-fine | not run (`bin/canopy-validate run t-fine`) |"
+      in text and "Successive" not in text, text.splitlines()[4])
+
+text = lines(None, None, 0.70)
+check("one level: no changes",
+      "needs two levels run" in text and "- 1.5 to" not in text,
+      text.splitlines()[-2])
+
+finish()
