@@ -3946,17 +3946,43 @@ def edge_against_cells_lines(results, start=8.0, end=12.0):
                 "" if both is None else " (%s the combined ± %.1f %%)" % (
                     "beyond" if abs(change) > both else "within",
                     100 * both))
+            told = both is not None and abs(change) > both
             if abs(m1 - m2) <= 0.01 * max(m1, m2):
-                same_metres.append("- edge %.3f m: %s" % (m1, pair))
+                same_metres.append(("- edge %.3f m: %s" % (m1, pair),
+                                    change, told))
             elif e1 == e2:
-                same_cells.append("- edge %g finest cells: %s" % (e1, pair))
+                same_cells.append(("- edge %g finest cells: %s" % (e1, pair),
+                                   change, told))
     if not same_metres and not same_cells:
         return lines + ["No pair of runs at two air resolutions with the "
                         "same edge is complete.", ""]
-    return (lines + ["The same edge in metres, the air refined:"]
-            + (same_metres or ["- no pair complete"]) + ["",
-               "The same edge in finest cells, both refined:"]
-            + (same_cells or ["- no pair complete"]) + [""])
+    lines += (["The same edge in metres, the air refined:"]
+              + ([p[0] for p in same_metres] or ["- no pair complete"])
+              + ["", "The same edge in finest cells, both refined:"]
+              + ([p[0] for p in same_cells] or ["- no pair complete"]) + [""])
+    if same_metres and same_cells:
+        largest = dict((what, max(abs(p[1]) for p in pairs))
+                       for what, pairs in (("metres", same_metres),
+                                           ("cells", same_cells)))
+        moved = dict((what, any(p[2] for p in pairs))
+                     for what, pairs in (("metres", same_metres),
+                                         ("cells", same_cells)))
+        if moved["metres"] and not moved["cells"]:
+            verdict = ("C_D0 follows the edge's ratio to the cells: at the "
+                       "same ratio the air's refinement moves it within "
+                       "the intervals, at the same length beyond them")
+        elif moved["cells"] and not moved["metres"]:
+            verdict = ("C_D0 follows the edge's length: at the same length "
+                       "the air's refinement moves it within the "
+                       "intervals, at the same ratio beyond them")
+        else:
+            verdict = ("neither the edge's length nor its ratio to the "
+                       "cells alone sets C_D0: refining the air moves it "
+                       "by up to %.1f %% at the same length and %.1f %% at "
+                       "the same ratio" % (100 * largest["metres"],
+                                           100 * largest["cells"]))
+        lines += ["Across the air's resolutions %s." % verdict, ""]
+    return lines
 
 
 def longer_run_lines(results, ident, shorter):

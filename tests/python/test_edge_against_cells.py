@@ -13,7 +13,11 @@ with edges 1.5 and 1 finest cells: edge 0.150 m at 10 cells and 1.5,
 0.100 m at 10 cells and 1 or at 15 cells and 1.5, 0.0667 m at 15 and 1.
 So (10, 1) against (15, 1.5) share 0.100 m; (10, 1.5) against (15, 1.5)
 share 1.5 cells. A series that ends before the window is named so; a
-run not run is named with its command.
+run not run is named with its command. The verdict: C_D0 changed only
+at the same length follows the ratio; changed only at the same ratio,
+the length; changed at both (5 to 5.5 m/s at 0.100 m: -17.4 %; 6 to 5.5
+at 1.5 cells and 5 to 4.2 at 1 cell: +19.0 % and +41.7 %), neither alone,
+with the largest change of each kind.
 """
 
 import math
@@ -76,5 +80,22 @@ check("the same edge in cells across resolutions, no change",
       in text, [r for r in text.splitlines() if "finest cells:" in r])
 check("runs at one resolution are not paired",
       "c10-e1.5 (10 cells) to c10-e1" not in text, "")
+check("moved at the same length only: follows the ratio",
+      "C_D0 follows the edge's ratio to the cells" in text,
+      text.splitlines()[-2])
+
+text = "\n".join(v.edge_against_cells_lines(list(zip(runs, [
+    record(6.0), record(5.0), record(5.0), record(4.0)]))))
+check("moved at the same ratio only: follows the length",
+      "C_D0 follows the edge's length" in text, text.splitlines()[-2])
+
+text = "\n".join(v.edge_against_cells_lines(list(zip(runs, [
+    record(6.0), record(5.0), record(5.5), record(4.2)]))))
+check("moved at both: neither alone, with the largest changes",
+      "neither the edge's length nor its ratio to the cells alone sets "
+      "C_D0: refining the air moves it by up to %.1f %% at the same "
+      "length and %.1f %% at the same ratio"
+      % (100 * (1 - 25 / 30.25), 100 * (25 / 4.2 ** 2 - 1)) in text,
+      text.splitlines()[-2])
 
 finish()
