@@ -3795,6 +3795,21 @@ def window_change_lines(results, what):
     return lines
 
 
+def cd_change(c1, h1, c2, h2):
+    """C_D0's relative change from c1 to c2 against the pair's combined
+    95 % relative half-width hypot(h1, h2) (None when either is None):
+    (change, told apart, the markdown "C_D0 +x % (beyond|within the
+    combined ± y %)")."""
+    change = (c2 - c1) / c1
+    both = math.hypot(h1, h2) if h1 is not None and h2 is not None else None
+    told = both is not None and abs(change) > both
+    text = "C_D0 %+.1f %%%s" % (100 * change, "" if both is None else
+                                " (%s the combined ± %.1f %%)" % (
+                                    "beyond" if told else "within",
+                                    100 * both))
+    return change, told, text
+
+
 def edge_levels_lines(results):
     """The fabric's edge varied at one air resolution (studies
     edgeLength7ft, edgeLength7ftLong), from the records, as markdown: per
@@ -3831,40 +3846,37 @@ def edge_levels_lines(results):
             edge, "%.3f" % (edge * d0 / cpd) if cpd else "—", run.ident, cd,
             " ± %.1f %%" % (100 * half) if half is not None else "",
             a["projectedDiameter"]["mean"] / d0, skirt, outer, breathing))
-        done.append((edge, run, cd, half))
+        done.append((edge, cd, half))
     lines = ["| edge [finest cells] | edge [m] | run | C_D0 (95 %) | Dp/D0 | "
              "skirt radius / D0 | outer ring folded beyond 90 deg | "
              "breathing |", "|---|---|---|---|---|---|---|---|"] + rows + [""]
     if len(done) < 2:
         return lines + ["The edge's effect needs two levels run.", ""]
     steps = []
-    for (e1, r1, c1, h1), (e2, r2, c2, h2) in zip(done, done[1:]):
-        change = (c2 - c1) / c1
-        both = (math.hypot(h1, h2) if h1 is not None and h2 is not None
-                else None)
-        steps.append((change, both is not None and abs(change) > both,
-                      "%g to %g" % (e1, e2)))
-        lines.append("- %g to %g finest cells: C_D0 %+.1f %%%s." % (
-            e1, e2, 100 * change,
-            "" if both is None else " (%s the combined ± %.1f %%)" % (
-                "beyond" if abs(change) > both else "within", 100 * both)))
+    for (e1, c1, h1), (e2, c2, h2) in zip(done, done[1:]):
+        change, told, text = cd_change(c1, h1, c2, h2)
+        steps.append((change, told, "%g to %g" % (e1, e2)))
+        lines.append("- %g to %g finest cells: %s." % (e1, e2, text))
     if len(steps) >= 2:
-        (a, a_told, a_name), (b, b_told, b_name) = steps[-2], steps[-1]
-        unclear = [n for n, told in ((a_name, a_told), (b_name, b_told))
-                   if not told]
+        (before, before_told, before_name), (last, last_told, last_name) = \
+            steps[-2], steps[-1]
+        unclear = [n for n, told in ((before_name, before_told),
+                                     (last_name, last_told)) if not told]
         if unclear:
             verdict = ("%s lies within the pair's interval, so whether the "
                        "levels converge or oscillate is not told apart"
                        % " and ".join(unclear))
-        elif a * b < 0:
+        elif before * last < 0:
             verdict = ("the last two refinements move C_D0 in opposite "
                        "directions: the levels oscillate")
-        elif abs(b) < abs(a):
+        elif abs(last) < abs(before):
             verdict = ("the last refinement moves C_D0 less than the one "
-                       "before (ratio %.2f): the levels converge" % (b / a))
+                       "before (ratio %.2f): the levels converge"
+                       % (last / before))
         else:
             verdict = ("the last refinement moves C_D0 more than the one "
-                       "before (ratio %.2f): the levels diverge" % (b / a))
+                       "before (ratio %.2f): the levels diverge"
+                       % (last / before))
         lines.append("- Successive changes: %s." % verdict)
     return lines + [""]
 
@@ -3894,11 +3906,12 @@ def edge_against_cells_lines(results, start=8.0, end=12.0):
     or its ratio to the finest cells (study edgeAgainstCells7ft), from the
     records, as markdown: per run the cells across D0, the edge in finest
     cells and in metres, and the descent over one common window (each
-    record's descent series, window_mean) with C_D0 = W / (rho V^2 S0 / 2)
-    for the record's weight W less buoyancy; then each pair of runs at the same edge in metres and each at
-    the same edge in cells, with the change of C_D0 between them against
-    the pair's combined 95 % interval (C_D0's relative half-width twice
-    the descent's)."""
+    record's descent series, window_mean) with C_D0 = W / (rho V^2 S0 / 2),
+    W the weight the record's drag balances; then each pair of runs at the
+    same edge in metres and each at the same edge in cells, with the
+    change of C_D0 between them against the pair's combined 95 % interval
+    (cd_change; C_D0's relative half-width twice the descent's), and a
+    verdict on which of the two sets C_D0."""
     rows, done = [], []
     for run, rec in results:
         a = rec and rec.get("complete") and rec.get("analysis")
@@ -3938,15 +3951,9 @@ def edge_against_cells_lines(results, start=8.0, end=12.0):
                 continue
             (ra, na, ca), (rb, nb, cb) = sorted(
                 [(r1, n1, c1), (r2, n2, c2)], key=lambda x: x[1])
-            change = (cb - ca) / ca
-            both = (math.hypot(h1, h2) if h1 is not None and h2 is not None
-                    else None)
-            pair = "%s (%g cells) to %s (%g cells): C_D0 %+.1f %%%s" % (
-                ra.ident, na, rb.ident, nb, 100 * change,
-                "" if both is None else " (%s the combined ± %.1f %%)" % (
-                    "beyond" if abs(change) > both else "within",
-                    100 * both))
-            told = both is not None and abs(change) > both
+            change, told, text = cd_change(ca, h1, cb, h2)
+            pair = "%s (%g cells) to %s (%g cells): %s" % (
+                ra.ident, na, rb.ident, nb, text)
             # the same length within 2 %: the edges in cells are given to
             # two digits (0.56 and 0.83 for 1.25 / 1.5^2 and 1.25 / 1.5)
             if abs(m1 - m2) <= 0.02 * max(m1, m2):
@@ -5883,8 +5890,8 @@ def write_report():
                    "length the finer air gives less drag. A 4 s window "
                    "reads the 18-cell finer cloths while they still speed "
                    "up (their drifts above; over 10-40 s study "
-                   "edgeLength7ftLong gives 0.792 and 0.738), so these "
-                   "8-12 s values bound the effect from above. Neither "
+                   "edgeLength7ftLong gives 0.792 and 0.738), so the "
+                   "18-cell values overstate the effect. Neither "
                    "level is converged in both resolutions at once: the "
                    "next step is 27 cells with the 0.56 edge and both "
                    "27-cell cloths run on to 40 s.", ""]
@@ -5990,8 +5997,9 @@ def write_report():
                    "finest give 0.674, 0.792 and 0.738: the 8-12 s "
                    "window overstates the finer cloths' drag, and the "
                    "levels oscillate. The drag does not follow the "
-                   "markers' density (the densest lies between the other "
-                   "two), so it is not leakage between them: what "
+                   "markers' density (over 10-40 s the densest lies "
+                   "between the other two), so it is not leakage between "
+                   "them: what "
                    "changes is the cloth's shape at the skirt, where the "
                    "0.15 m edge folds more of its outer ring's hinges "
                    "beyond 90 degrees. The same 0.098 m edge at 27 cells "
