@@ -3905,6 +3905,14 @@ def edge_levels_lines(results):
     return lines + [""]
 
 
+def edge_study_lines(results):
+    """An edge study's table and changes (edge_levels_lines) with the
+    GCI over the edge's inverse (gci_lines), as markdown."""
+    return edge_levels_lines(results) + gci_lines(
+        results, lambda run: 1.0 / fabric_edge_cells(run),
+        "per finest cell: the edge's inverse")
+
+
 def window_mean(analysis, start, end):
     """The descent's time mean over [start, end] from a record's descent
     series (report.py's decimated t, v), with its 95 % half-width from the
@@ -5972,9 +5980,7 @@ def write_report():
                    "5-12 s as the resolution study's level; its projected "
                    "diameter and shape below stay over that interval).",
                    ""]
-            md += edge_levels_lines(common)
-            md += gci_lines(common, lambda run: 1.0 / fabric_edge_cells(
-                run), "per finest cell: the edge's inverse")
+            md += edge_study_lines(common)
             md += ["At 27 cells across D0 the three edges give C_D0 0.712, "
                    "0.782 and 0.813 over 8-12 s: each refinement of the "
                    "cloth raises the drag, the second by 0.41 of the "
@@ -5993,9 +5999,7 @@ def write_report():
                    "coupling iterations a step in steady descent).",
                    ""]
         if name == "edgeLength7ftLong":
-            md += edge_levels_lines(results)
-            md += gci_lines(results, lambda run: 1.0 / fabric_edge_cells(
-                run), "per finest cell: the edge's inverse")
+            md += edge_study_lines(results)
             md += window_change_lines(results, "The fabric's edge at 0.83 "
                                       "and 0.56 finest cells")
             md += ["Over 30 s the three edges give C_D0 0.674, 0.792 and "
@@ -6097,9 +6101,7 @@ def write_report():
                    "show: section \"The cloth's stiffness in "
                    "compression\" below.", ""]
         if name == "edgeLength7ft":
-            md += edge_levels_lines(results)
-            md += gci_lines(results, lambda run: 1.0 / fabric_edge_cells(
-                run), "per finest cell: the edge's inverse")
+            md += edge_study_lines(results)
             md += ["The fabric's edge at 1.88, 1.25 (the main job), 0.83 "
                    "and 0.56 finest cells is 0.22, 0.15, 0.098 and 0.066 "
                    "m: 192, 368, 992 and 2080 cloth triangles, with 768, "
