@@ -79,10 +79,15 @@ class Run:
 SEVEN = "parachutes/flatCircular7ft"
 # An edit's value that removes the entry instead of setting it
 REMOVE = "REMOVE"
+# An edit's value set, when the case is prepared, to the payload's last
+# velocity in the run's rest_state_of source (its canopy.dat)
+SOURCE_PAYLOAD_VELOCITY = "SOURCE_PAYLOAD_VELOCITY"
 T10 = "parachutes/T10"
 G11 = "parachutes/G11third"
 G11_FOLDED = "parachutes/G11thirdFolded"
 PROPS = "constant/canopyProperties"
+# Where a run's rest_state_of source's last state is written (initialState)
+REST_STATE = "constant/restState.h5"
 
 # The cloth without hinge dashpots (the 7 ft default until they were adopted)
 UNDAMPED = [(PROPS, "fabric/bendingDamping", "0")]
@@ -1210,6 +1215,111 @@ RUNS += [
         [(MESH_DICT, "edgeLengthPerCell", "0.56")] + TO_12,
         reference="7ft", steady_start=8, steady_end=12),
 ]
+# The air's resolution to 40 cells across D0 with the cloth held at its
+# finest (issue 31 §3.2): the 0.044 m fabric edge of 7ft-cpd27-edge0.56
+# (0.37, 0.56 and 0.83 finest cells at 18, 27 and 40 cells across D0).
+# From rest the 40-cell level costs about 10 h of the 2-core machine, so
+# every level starts from an inflated canopy (rest_state.py) at rest in
+# the frame: the cells at the canopy are the one thing that changes.
+# Started in a uniform stream (seven_inflated) a level re-makes its wake
+# first; continuing a coarser run's air (seven_mapped) it does not. On
+# the guide wire the canopy cannot swing, so the
+# finest box need not hold the swing's 0.5 D0: it is 1.6 D0 wide (the
+# skirt at 0.39 D0 from the axis, 0.41 D0 = 16 cells at 40 to its side)
+# and the next level 2.8 D0 wide, from 1.2 D0 below; 0.86 M cells at 40
+# cells across D0 instead of 1.59 M.
+NARROW_REFINEMENT = ("( { halfWidth 2.6; below 2.4; above 7; } "
+                     "{ halfWidth 1.4; below 1.2; above 3.6; } "
+                     "{ halfWidth 0.8; below 0.7; above 1.1; } )")
+INFLATED_EDGE = 0.56 / 27          # the fabric's edge over D0 (0.044 m)
+INFLATED_START = 2.0
+
+
+def fine_cloth_edits(cells, narrow=True):
+    """The 0.044 m fabric edge at `cells` across D0, and the narrow
+    refinement unless narrow is False."""
+    edits = [(MESH_DICT, "edgeLengthPerCell",
+              "%.7g" % (INFLATED_EDGE * cells))]
+    if narrow:
+        edits.append((MESH_DICT, "refinement", NARROW_REFINEMENT))
+    return edits
+
+
+def seven_inflated(ident, cells, source, speed, narrow=True, end=5):
+    """The 7 ft canopy from run `source`'s inflated state, at rest in the
+    frame, every node and the air at `speed` [m/s], cells across D0, the
+    0.044 m cloth, to end [s], read from INFLATED_START."""
+    layout = "the narrow refinement" if narrow else "the tutorial's refinement"
+    edge, refinement = (fine_cloth_edits(cells, narrow) + [None])[:2]
+    edits = [edge,
+             (PROPS, "initialState", '"%s"' % REST_STATE),
+             (PROPS, "initialVelocity", "(0 0 %g)" % -speed),
+             ("0.orig/U", "internalField", "uniform (0 0 %g)" % speed),
+             ("system/controlDict", "endTime", "%g" % end)]
+    if refinement:
+        edits.append(refinement)
+    return Run(ident, SEVEN, "%s's inflated canopy (fabric edge 0.044 m) "
+               "descending at %g m/s, %d cells across D0, %s, to %g s; "
+               "interval %g-%g s" % (source, speed, cells, layout, end,
+                                     INFLATED_START, end),
+               ["-cellsPerDiameter", "%d" % cells], edits, reference="7ft",
+               steady_start=INFLATED_START, steady_end=end,
+               rest_state_of=source)
+
+
+# The first start: 7ft-cpd27-edge0.56's canopy at 12 s (5.66 m/s, its
+# descent over 8-12 s), at 18 cells (to 6 s) and 27 (to 5 s), and the
+# narrow layout's own effect at 18 cells: the narrow refinement against
+# the tutorial's
+FIRST_SOURCE, FINE_CLOTH_SPEED = "7ft-cpd27-edge0.56", 5.66
+RUNS += [seven_inflated("7ft-inflated-cpd18", 18, FIRST_SOURCE,
+                        FINE_CLOTH_SPEED, end=6),
+         seven_inflated("7ft-inflated-cpd27", 27, FIRST_SOURCE,
+                        FINE_CLOTH_SPEED),
+         seven_inflated("7ft-inflated-cpd18-wide", 18, FIRST_SOURCE,
+                        FINE_CLOTH_SPEED, narrow=False, end=6)]
+# The levels' common source: the 0.044 m cloth inflated from rest at 18
+# cells on the narrow refinement, to 10 s (the first start's source costs
+# 75 min of the 2-core machine, this one 14 min; a machine that no longer
+# holds a source's case must make it again)
+FINE_CLOTH_SOURCE = "7ft-cpd18-cloth0.044-10s"
+RUNS += [
+    Run(FINE_CLOTH_SOURCE, SEVEN, "18 cells across D0, the narrow "
+        "refinement, the tutorial's cloth and load with the fabric's edge "
+        "0.044 m (0.37 finest cells), from rest to 10 s; interval 6-10 s",
+        ["-cellsPerDiameter", "18"], fine_cloth_edits(18)
+        + [("system/controlDict", "endTime", "10")],
+        reference="7ft", steady_start=6, steady_end=10),
+]
+
+
+def seven_mapped(ident, cells, source, end=4, start=1.0):
+    """The 7 ft canopy continuing run `source` on `cells` across D0: its
+    latest air fields mapped onto this mesh (canopy-run-case
+    -mapFieldsFrom), its canopy at rest in the frame, every node at the
+    payload's last velocity; the 0.044 m cloth on the narrow refinement,
+    to end [s], read from start [s]."""
+    edge, refinement = fine_cloth_edits(cells)
+    return Run(ident, SEVEN, "%s's air and inflated canopy (fabric edge "
+               "0.044 m) mapped onto %d cells across D0, the narrow "
+               "refinement, to %g s; interval %g-%g s"
+               % (source, cells, end, start, end),
+               ["-cellsPerDiameter", "%d" % cells,
+                "-mapFieldsFrom", os.path.join("..", source)],
+               [edge, (PROPS, "initialState", '"%s"' % REST_STATE),
+                (PROPS, "initialVelocity", SOURCE_PAYLOAD_VELOCITY),
+                ("system/controlDict", "endTime", "%g" % end), refinement],
+               reference="7ft", steady_start=start, steady_end=end,
+               rest_state_of=source)
+
+
+# The levels continuing the source's wake as well as its canopy: started
+# in a uniform stream the descent falls to 4.2 m/s, overshoots to 6.3 at
+# 3 s and is still settling at 5 s (study inflatedStart7ft), as the
+# from-rest runs do until about 8 s; with the source's fields mapped onto
+# the finer mesh only the scales the finer cells add have to develop
+RUNS += [seven_mapped("7ft-mapped-cpd%d" % n, n, FINE_CLOTH_SOURCE)
+         for n in (18, 27, 40)]
 # Turbulence at the converged set-up (issue 34 item 3): the WALE LES
 # model with LUST convection on the main job's set-up over 10-40 s (the
 # long window whose interval is ±1.4 % in C_D0), and on the resolution
@@ -1550,7 +1660,6 @@ RUNS += [
 # which the moment vanishes is the trim the parachute swings about
 # (tilt_lines). T-10: T10-skirt-cpd13-m163's state at 80 s (6.66 m/s), to
 # 30 s (19 D0/V), read over 15-30 s
-REST_STATE = "constant/restState.h5"
 
 
 def tilted_stream(speed, alpha):
@@ -1942,6 +2051,25 @@ STUDIES = [
      "compared over 8-12 s)",
      ["7ft-default", "7ft-default-edge0.83", "7ft-default-edge0.56",
       "7ft-cpd27-held", "7ft-cpd27-edge0.83", "7ft-cpd27-edge0.56"]),
+    ("inflatedStart7ft", "7 ft canopy on the guide wire: the inflated "
+     "canopy started in a uniform stream (%s's canopy at 12 s, at rest in "
+     "the frame, every node and the air at %g m/s; the 0.044 m cloth on the "
+     "narrow refinement, 18 cells across D0 to 6 s and 27 to 5 s, read from "
+     "2 s) against the same cloth and air from rest"
+     % (FIRST_SOURCE, FINE_CLOTH_SPEED),
+     ["7ft-inflated-cpd18", "7ft-inflated-cpd27", FIRST_SOURCE]),
+    ("resolution7ftMapped", "7 ft canopy on the guide wire: cells "
+     "across D0 at the canopy with the cloth held at its finest (fabric "
+     "edge 0.044 m) on the narrow refinement, each level continuing %s at "
+     "10 s (its air's fields mapped onto the level's mesh, its canopy at "
+     "rest in the frame at the payload's speed), to 4 s, read over 1-4 s"
+     % FINE_CLOTH_SOURCE,
+     ["7ft-mapped-cpd%d" % n for n in (18, 27, 40)] + [FINE_CLOTH_SOURCE]),
+    ("narrowRefinement7ft", "7 ft canopy on the guide wire: the finest "
+     "box 1.6 D0 wide (the narrow refinement) against the tutorial's 2.6 "
+     "D0 (18 cells across D0, the 0.044 m cloth from 7ft-cpd27-edge0.56's "
+     "inflated canopy at 5.66 m/s, to 6 s, read over 2-6 s)",
+     ["7ft-inflated-cpd18-wide", "7ft-inflated-cpd18"]),
     ("edgeLength7ftCpd27", "7 ft canopy: the structure's resolution at 27 "
      "cells across D0 (the tutorial's cloth and load; fabric edge 1.25, "
      "0.83 and 0.56 finest cells, 0.099, 0.066 and 0.044 m; from rest to "
@@ -2253,6 +2381,14 @@ def slim_case(case_dir):
     return len(doomed), freed
 
 
+def last_payload_velocity(case_dir):
+    """The payload's velocity at the last time of a run's series (every
+    canopy.dat of the case, restarts joined; report.load_case) as an
+    OpenFOAM vector "(x y z)" [m/s]."""
+    return "(%.10g %.10g %.10g)" % tuple(rep.load_case(case_dir).columns(
+        "payload_Ux", "payload_Uy", "payload_Uz")[-1])
+
+
 def prepare(run):
     """Fresh copy of the tutorial with the run's edits."""
     src = os.path.join(TOP, "tutorials", run.tutorial)
@@ -2272,6 +2408,9 @@ def prepare(run):
             continue
         if value == "DOUBLE":
             value = "%.10g" % (2 * float(foam_get(path, entry)))
+        if value == SOURCE_PAYLOAD_VELOCITY:
+            value = last_payload_velocity(
+                RUN_BY_ID[run.rest_state_of].case_dir)
         action = ["-remove"] if value == REMOVE else ["-set", value]
         out = subprocess.run(["foamDictionary", "-entry", entry] + action
                              + [path], capture_output=True, text=True)
@@ -3874,13 +4013,23 @@ def edge_levels_lines(results):
     lines = ["| edge [finest cells] | edge [m] | run | C_D0 (95 %) | Dp/D0 | "
              "skirt radius / D0 | outer ring folded beyond 90 deg | "
              "breathing |", "|---|---|---|---|---|---|---|---|"] + rows + [""]
+    return lines + successive_change_lines(done, "finest cells",
+                                           "The edge's effect")
+
+
+def successive_change_lines(done, unit, what):
+    """Each refinement's change in C_D0 against the pair's combined
+    interval (cd_change), and whether the changes shrink (the levels
+    converge), grow, or change sign (oscillate), as markdown; done [(level,
+    C_D0, its 95 % relative half-width or None)] coarse to fine, level in
+    `unit`; `what` names the effect when fewer than two levels are run."""
     if len(done) < 2:
-        return lines + ["The edge's effect needs two levels run.", ""]
-    steps = []
+        return ["%s needs two levels run." % what, ""]
+    lines, steps = [], []
     for (e1, c1, h1), (e2, c2, h2) in zip(done, done[1:]):
         change, told, text = cd_change(c1, h1, c2, h2)
         steps.append((change, told, "%g to %g" % (e1, e2)))
-        lines.append("- %g to %g finest cells: %s." % (e1, e2, text))
+        lines.append("- %g to %g %s: %s." % (e1, e2, unit, text))
     if len(steps) >= 2:
         (before, before_told, before_name), (last, last_told, last_name) = \
             steps[-2], steps[-1]
@@ -3903,6 +4052,85 @@ def edge_levels_lines(results):
                        % (last / before))
         lines.append("- Successive changes: %s." % verdict)
     return lines + [""]
+
+
+def air_levels_lines(results):
+    """The air's resolution varied with the cloth held (study
+    resolution7ftFineCloth), from the records, as markdown: per level,
+    coarse to fine, cells across D0 and in the mesh, the descent with its
+    95 % half-width and drift over the interval, C_D0 with its relative
+    half-width (twice the descent's), Dp/D0, C_Dp on the projected area,
+    the breathing peak where the spectrum resolves one, the coupling's
+    iterations a step over the interval and the wall time; then each
+    refinement's change in C_D0 against the pair's combined interval
+    (successive_change_lines) and Roache's GCI (gci_lines)."""
+    rows, done = [], []
+    for run, rec in sorted(results, key=lambda x: cells_per_diameter(x[0])):
+        a = rec and rec.get("complete") and rec.get("analysis")
+        cpd = cells_per_diameter(run)
+        if not a:
+            rows.append("| %g | — | %s | not run (`%s`) | | | | | | |"
+                        % (cpd, run.ident, run.command()))
+            continue
+        d0 = a["parameters"]["nominalDiameter"]["value"]
+        v = a["descentVelocity"]
+        cd = a["dragCoefficient"]["weightBalance"]
+        dp = a["projectedDiameter"]["mean"] / d0
+        half = 2 * v["ci95"] / v["mean"] if v.get("ci95") else None
+        b = a.get("breathing") or {}
+        breathing = ("%.2f Hz, %.1f cm" % (b["frequency"],
+                                           100 * b["amplitude"])
+                     if b.get("resolved") else "none resolved")
+        wall = rec.get("wall", rec.get("wallTime"))
+        rows.append("| %g | %s | %s | %.2f ± %s (%+.2f) | %.3f%s | %.3f | "
+                    "%.3f | %s | %.2f | %s |" % (
+                        cpd, _f(rec.get("cells"), "%d"), run.ident,
+                        v["mean"], _f(v.get("ci95"), "%.2f"), v["drift"], cd,
+                        " ± %.1f %%" % (100 * half) if half is not None
+                        else "", dp, cd / dp ** 2, breathing,
+                        a["coupling"]["meanIterationsSteady"],
+                        _f(wall / 60 if wall else None, "%.0f min")))
+        done.append((cpd, cd, half))
+    lines = ["| cells across D0 | cells | run | descent [m/s] (95 %; drift) "
+             "| C_D0 (95 %) | Dp/D0 | C_Dp | breathing | coupling "
+             "iterations a step | wall time |",
+             "|---|---|---|---|---|---|---|---|---|---|"] + rows + [""]
+    return (lines + successive_change_lines(done, "cells across D0",
+                                            "The air's resolution")
+            + gci_lines(results))
+
+
+def start_transient_lines(results, bin_width=0.5):
+    """The descent's course from each run's start, from its record's
+    descent series, as markdown: its means over successive bins of
+    bin_width [s], the lowest bin and the highest after it with their
+    times, and the last bin: whether the run has passed its start's
+    transient before its interval is read."""
+    lines = []
+    for run, rec in results:
+        a = rec and rec.get("complete") and rec.get("analysis")
+        series = (a or {}).get("descentSeries") or {}
+        t = np.asarray(series.get("t") or [], dtype=float)
+        v = np.asarray(series.get("v") or [], dtype=float)
+        if len(t) < 4:
+            continue
+        starts = np.arange(0.0, t[-1], bin_width)
+        means = [(s0, v[(t >= s0) & (t < s0 + bin_width)].mean())
+                 for s0 in starts if np.any((t >= s0) & (t < s0 + bin_width))]
+        low = min(range(len(means)), key=lambda k: means[k][1])
+        high = max(range(low, len(means)), key=lambda k: means[k][1])
+        lines.append("- %s (interval from %g s): %s m/s in %g s bins; "
+                     "lowest %.2f m/s at %g-%g s, then highest %.2f at "
+                     "%g-%g s; last %.2f." % (
+                         run.ident, a["steady"]["start"],
+                         ", ".join("%.2f" % m for _, m in means), bin_width,
+                         means[low][1], means[low][0],
+                         means[low][0] + bin_width, means[high][1],
+                         means[high][0], means[high][0] + bin_width,
+                         means[-1][1]))
+    if not lines:
+        return ["The descent from the start: no run complete.", ""]
+    return ["The descent from the start:", ""] + lines + [""]
 
 
 def edge_study_lines(results):
@@ -5971,6 +6199,15 @@ def write_report():
                    "within the pair's interval. The 27-cell cloths are "
                    "read over 8-12 s only; run on to 40 s they are what "
                    "would tell whether the converging levels hold.", ""]
+        if name == "inflatedStart7ft":
+            md += air_levels_lines([(r, rec) for r, rec in results
+                                    if r.rest_state_of == FIRST_SOURCE])
+            md += start_transient_lines(results)
+        if name == "resolution7ftMapped":
+            md += air_levels_lines([(r, rec) for r, rec in results
+                                    if r.rest_state_of == FINE_CLOTH_SOURCE])
+        if name == "narrowRefinement7ft":
+            md += window_change_lines(results, "The narrow refinement")
         if name == "edgeLength7ftCpd27":
             common = over_window(results, 8.0, 12.0)
             md += ["The descent and C_D0 of each run over 8-12 s from its "
