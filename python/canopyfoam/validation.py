@@ -1293,22 +1293,25 @@ RUNS += [
 ]
 
 
-def seven_mapped(ident, cells, source, end=4, start=1.0):
+def seven_mapped(ident, cells, source, end=4, start=1.0, edits=(),
+                 setting=""):
     """The 7 ft canopy continuing run `source` on `cells` across D0: its
     latest air fields mapped onto this mesh (canopy-run-case
     -mapFieldsFrom), its canopy at rest in the frame, every node at the
     payload's last velocity; the 0.044 m cloth on the narrow refinement,
-    to end [s], read from start [s]."""
+    to end [s], read from start [s]; more edits and their `setting` (for
+    the label) if given."""
     edge, refinement = fine_cloth_edits(cells)
     return Run(ident, SEVEN, "%s's air and inflated canopy (fabric edge "
                "0.044 m) mapped onto %d cells across D0, the narrow "
-               "refinement, to %g s; interval %g-%g s"
-               % (source, cells, end, start, end),
+               "refinement%s, to %g s; interval %g-%g s"
+               % (source, cells, setting, end, start, end),
                ["-cellsPerDiameter", "%d" % cells,
                 "-mapFieldsFrom", os.path.join("..", source)],
                [edge, (PROPS, "initialState", '"%s"' % REST_STATE),
                 (PROPS, "initialVelocity", SOURCE_PAYLOAD_VELOCITY),
-                ("system/controlDict", "endTime", "%g" % end), refinement],
+                ("system/controlDict", "endTime", "%g" % end), refinement]
+               + list(edits),
                reference="7ft", steady_start=start, steady_end=end,
                rest_state_of=source)
 
@@ -1320,6 +1323,12 @@ def seven_mapped(ident, cells, source, end=4, start=1.0):
 # the finer mesh only the scales the finer cells add have to develop
 RUNS += [seven_mapped("7ft-mapped-cpd%d" % n, n, FINE_CLOTH_SOURCE)
          for n in (18, 27, 40)]
+# The time step at the finest level that a second run of it affords (issue
+# 31 §3.3): the 27-cell level with maxCo 0.25 against the tutorial's 0.5
+RUNS += [seven_mapped("7ft-mapped-cpd27-co0.25", 27, FINE_CLOTH_SOURCE,
+                      edits=[("system/controlDict", "maxCo", "0.25"),
+                             ("system/controlDict", "maxDeltaT", "0.005")],
+                      setting=", maxCo 0.25 (maxDeltaT 0.005)")]
 # Turbulence at the converged set-up (issue 34 item 3): the WALE LES
 # model with LUST convection on the main job's set-up over 10-40 s (the
 # long window whose interval is ±1.4 % in C_D0), and on the resolution
@@ -1522,6 +1531,33 @@ RUNS += [ten("T10-skirt-cpd13-m163-w%g" % w, "163 kg on a guide wire, the "
 RUNS += [Run("T10-skirt-cpd13-default", T10, "the tutorial's default: the "
              "extended skirt, 100 kg, box 8 D0 wide, 13 cells across D0, to "
              "20 s", reference="T10")]
+# The T-10's air to 30 cells across D0 (issue 31 §3.2) as the 7 ft
+# canopy's goes to 40 (resolution7ftMapped): the cloth held at the
+# 30-cell level's tutorial edge (1.25 finest cells at 30 = 0.446 m; 0.54
+# and 0.83 finest cells at 13 and 20), inflated from rest at 13 cells to
+# 80 s as the payload sweep is (steady over 50-80 s) as the levels'
+# source; each level continues it (its air mapped onto the level's mesh,
+# its canopy at rest in the frame at the payload's last velocity) for 12
+# s, read over 2-12 s: 6 D0/V and 4.3 periods of the seed's 2.3 s
+# breathing
+T10_FINE_EDGE = 1.25 / 30           # the fabric's edge over D0 (0.446 m)
+T10_FINE_SOURCE = "T10-skirt-cpd13-cloth0.446-80s"
+RUNS += [ten(T10_FINE_SOURCE, "163 kg on a guide wire, the extended skirt, "
+             "box 8 D0 wide, 13 cells across D0, the fabric's edge 0.446 m "
+             "(0.54 finest cells)", ["-cellsPerDiameter", "13"],
+             edits=[(MESH_DICT, "edgeLengthPerCell",
+                     "%.7g" % (T10_FINE_EDGE * 13))], start=50, end=80)]
+RUNS += [ten("T10-mapped-cpd%d" % n, "163 kg on a guide wire, the extended "
+             "skirt: %s's air and inflated canopy (fabric edge 0.446 m) "
+             "mapped onto %d cells across D0" % (T10_FINE_SOURCE, n),
+             ["-cellsPerDiameter", "%d" % n,
+              "-mapFieldsFrom", os.path.join("..", T10_FINE_SOURCE)],
+             edits=[(MESH_DICT, "edgeLengthPerCell",
+                     "%.7g" % (T10_FINE_EDGE * n)),
+                    (PROPS, "initialState", '"%s"' % REST_STATE),
+                    (PROPS, "initialVelocity", SOURCE_PAYLOAD_VELOCITY)],
+             start=2, end=12, rest_state_of=T10_FINE_SOURCE)
+         for n in (13, 20, 30)]
 # Free flight over a long window (issue 34 item 5): the suspension's angle
 # to the vertical, the swing's period and the glide, the T-10 at 13 cells
 # across D0 (its resolution study puts 11 outside 13 and 20) to 60 s,
@@ -2065,6 +2101,17 @@ STUDIES = [
      "rest in the frame at the payload's speed), to 4 s, read over 1-4 s"
      % FINE_CLOTH_SOURCE,
      ["7ft-mapped-cpd%d" % n for n in (18, 27, 40)] + [FINE_CLOTH_SOURCE]),
+    ("resolutionT10Mapped", "T-10 at 163 kg on a guide wire, the extended "
+     "skirt: cells across D0 at the canopy with the cloth held at 0.446 m "
+     "(the 30-cell level's edge), each level continuing %s at 80 s (its "
+     "air's fields mapped onto the level's mesh, its canopy at rest in the "
+     "frame at the payload's speed), to 12 s, read over 2-12 s"
+     % T10_FINE_SOURCE,
+     ["T10-mapped-cpd%d" % n for n in (13, 20, 30)] + [T10_FINE_SOURCE]),
+    ("timeStep7ftMapped", "7 ft canopy on the guide wire: the time step "
+     "at 27 cells across D0 (maxCo 0.5 and 0.25; the 0.044 m cloth "
+     "continuing %s at 10 s, to 4 s, read over 1-4 s)" % FINE_CLOTH_SOURCE,
+     ["7ft-mapped-cpd27", "7ft-mapped-cpd27-co0.25"]),
     ("narrowRefinement7ft", "7 ft canopy on the guide wire: the finest "
      "box 1.6 D0 wide (the narrow refinement) against the tutorial's 2.6 "
      "D0 (18 cells across D0, the 0.044 m cloth from 7ft-cpd27-edge0.56's "
@@ -3971,6 +4018,20 @@ def cd_change(c1, h1, c2, h2):
     return change, told, text
 
 
+def level_values(a):
+    """What a level's row shows of a record's analysis a: (D0, the descent
+    dict, C_D0, its 95 % relative half-width (twice the descent's; None
+    without an interval), the breathing peak as text)."""
+    v = a["descentVelocity"]
+    b = a.get("breathing") or {}
+    breathing = ("%.2f Hz, %.1f cm" % (b["frequency"], 100 * b["amplitude"])
+                 if b.get("resolved") else "read over another interval"
+                 if b.get("overOtherInterval") else "none resolved")
+    return (a["parameters"]["nominalDiameter"]["value"], v,
+            a["dragCoefficient"]["weightBalance"],
+            2 * v["ci95"] / v["mean"] if v.get("ci95") else None, breathing)
+
+
 def edge_levels_lines(results):
     """The fabric's edge varied at one air resolution (studies
     edgeLength7ft, edgeLength7ftLong, and edgeLength7ftCpd27 through
@@ -3990,20 +4051,12 @@ def edge_levels_lines(results):
             rows.append("| %g | — | %s | not run (`%s`) | | | | |"
                         % (edge, run.ident, run.command()))
             continue
-        d0 = a["parameters"]["nominalDiameter"]["value"]
-        v = a["descentVelocity"]
-        cd = a["dragCoefficient"]["weightBalance"]
-        half = 2 * v["ci95"] / v["mean"] if v.get("ci95") else None
+        d0, v, cd, half, breathing = level_values(a)
         shape = a.get("shape") or {}
         skirt = ("%.3f" % (shape["skirtRadiusMean"] / d0)
                  if shape.get("available") else "—")
         outer = ("%.0f %%" % (100 * shape["rings"][-1]["foldedFraction"])
                  if shape.get("available") and shape.get("rings") else "—")
-        b = a.get("breathing") or {}
-        breathing = ("%.2f Hz, %.1f cm" % (b["frequency"],
-                                           100 * b["amplitude"])
-                     if b.get("resolved") else "read over another interval"
-                     if b.get("overOtherInterval") else "none resolved")
         cpd = cells_per_diameter(run)
         rows.append("| %g | %s | %s | %.3f%s | %.3f | %s | %s | %s |" % (
             edge, "%.3f" % (edge * d0 / cpd) if cpd else "—", run.ident, cd,
@@ -4072,15 +4125,8 @@ def air_levels_lines(results):
             rows.append("| %g | — | %s | not run (`%s`) | | | | | | |"
                         % (cpd, run.ident, run.command()))
             continue
-        d0 = a["parameters"]["nominalDiameter"]["value"]
-        v = a["descentVelocity"]
-        cd = a["dragCoefficient"]["weightBalance"]
+        d0, v, cd, half, breathing = level_values(a)
         dp = a["projectedDiameter"]["mean"] / d0
-        half = 2 * v["ci95"] / v["mean"] if v.get("ci95") else None
-        b = a.get("breathing") or {}
-        breathing = ("%.2f Hz, %.1f cm" % (b["frequency"],
-                                           100 * b["amplitude"])
-                     if b.get("resolved") else "none resolved")
         wall = rec.get("wall", rec.get("wallTime"))
         rows.append("| %g | %s | %s | %.2f ± %s (%+.2f) | %.3f%s | %.3f | "
                     "%.3f | %s | %.2f | %s |" % (
@@ -4596,6 +4642,14 @@ def study_caveat(study):
     return STUDY_CAVEATS.get(study)
 
 
+def study_levels(results):
+    """The levels of a resolution study: the runs that start as its first
+    run does (the same rest_state_of: a study of levels continuing one
+    source also lists the source, for its table)."""
+    first = results[0][0].rest_state_of
+    return [(r, rec) for r, rec in results if r.rest_state_of == first]
+
+
 def converged(study):
     """The converged values of a resolution study, for the benchmarks: a
     dict {quantity: {finest, extrapolated, gci, kind, runs}} from the
@@ -4606,7 +4660,7 @@ def converged(study):
         raise SystemExit("canopy-validate: unknown study '%s'" % study)
     results = [(RUN_BY_ID[i], archive.load(ARCHIVE_DIR, RUN_BY_ID[i])[0])
                for i in ids]
-    done, table = resolution_estimates(results)
+    done, table = resolution_estimates(study_levels(results))
     if not table:
         raise SystemExit("canopy-validate: %s needs three complete runs, "
                          "has %d" % (study, len(done)))
@@ -6200,12 +6254,14 @@ def write_report():
                    "read over 8-12 s only; run on to 40 s they are what "
                    "would tell whether the converging levels hold.", ""]
         if name == "inflatedStart7ft":
-            md += air_levels_lines([(r, rec) for r, rec in results
-                                    if r.rest_state_of == FIRST_SOURCE])
+            md += air_levels_lines(study_levels(results))
             md += start_transient_lines(results)
         if name == "resolution7ftMapped":
-            md += air_levels_lines([(r, rec) for r, rec in results
-                                    if r.rest_state_of == FINE_CLOTH_SOURCE])
+            md += air_levels_lines(study_levels(results))
+        if name == "resolutionT10Mapped":
+            md += air_levels_lines(study_levels(results))
+        if name == "timeStep7ftMapped":
+            md += window_change_lines(results, "The time step halved")
         if name == "narrowRefinement7ft":
             md += window_change_lines(results, "The narrow refinement")
         if name == "edgeLength7ftCpd27":

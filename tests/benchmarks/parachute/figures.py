@@ -1,7 +1,7 @@
 """figures.py — the parachute benchmark's figures from finished runs: the main job's C_D0 error against the resolution study's converged value, and each resolution level's cost and coupling iterations in steady descent.
 
 Usage: python3 figures.py mainjob <case dir> <wall seconds>
-       python3 figures.py levels
+       python3 figures.py levels [study]
 Prints BENCH lines (name value unit) and '# ' comment lines.
 
 mainjob: C_D0 of the case over the interval the 7 ft study reads (the
@@ -11,10 +11,13 @@ canopy-validate converged resolution7ftHeld, from the committed records);
 then both over the main job's own interval (run 7ft-default's), when the
 finest run is in build/validation.
 
-levels: for each run of resolution7ftHeld found in build/validation (the
-study's own runs, 2 ranks), over the same interval: cells, wall seconds
-per time step (ClockTime increments of the solver log) and coupling
-iterations per step (canopy.dat).
+levels: for each run of a resolution study (default resolution7ftHeld;
+resolution7ftMapped: the levels that continue a coarser run) found in
+build/validation (the study's own runs, 2 ranks), over the interval of
+the study's first run: cells, wall seconds per time step (ClockTime
+increments of the solver log) and coupling iterations per step
+(canopy.dat). The study's runs that set no resolution of their own (a
+source run) are left out.
 """
 
 import os
@@ -31,9 +34,10 @@ from canopyfoam import validation as val      # noqa: E402
 STUDY = "resolution7ftHeld"
 
 
-def interval():
-    """The interval every level of STUDY is read over (its first run's)."""
-    run = val.RUN_BY_ID[dict((s[0], s[2]) for s in val.STUDIES)[STUDY][0]]
+def interval(study=STUDY):
+    """The interval every level of a study is read over (its first
+    run's)."""
+    run = val.RUN_BY_ID[dict((s[0], s[2]) for s in val.STUDIES)[study][0]]
     return run.steady_start, run.steady_end
 
 
@@ -95,11 +99,11 @@ def step_costs(log, t0, t1):
     return (clocks[sel[-1]] - clocks[sel[0] - 1]) / len(sel), len(sel)
 
 
-def levels():
-    t0, t1 = interval()
-    ids = dict((s[0], s[2]) for s in val.STUDIES)[STUDY]
-    for ident in ids:
-        run = val.RUN_BY_ID[ident]
+def levels(study=STUDY):
+    t0, t1 = interval(study)
+    ids = dict((s[0], s[2]) for s in val.STUDIES)[study]
+    for run, _ in val.study_levels([(val.RUN_BY_ID[i], None) for i in ids]):
+        ident = run.ident
         n = val.cells_per_diameter(run)
         log = val.solver_log(run.case_dir)
         if val.run_state(run) != "complete":
@@ -113,7 +117,8 @@ def levels():
         cells = val.cell_count(run.case_dir)
         print("# %s: %d cells, %d steps in %g-%g s" % (ident, cells, steps,
                                                        t0, t1))
-        name = "parachute_cpd%g" % n
+        name = "parachute_%scpd%g" % ("" if study == STUDY else
+                                       study + "_", n)
         print("BENCH %s_cells %d cells" % (name, cells))
         print("BENCH %s_time_per_step_2_ranks %.3f s" % (name, cost))
         print("BENCH %s_coupling_iterations %.2f iterations/step"
@@ -123,7 +128,7 @@ def levels():
 if __name__ == "__main__":
     if len(sys.argv) == 4 and sys.argv[1] == "mainjob":
         main_job(sys.argv[2], float(sys.argv[3]))
-    elif len(sys.argv) == 2 and sys.argv[1] == "levels":
-        levels()
+    elif len(sys.argv) in (2, 3) and sys.argv[1] == "levels":
+        levels(*sys.argv[2:])
     else:
         sys.exit(__doc__.split("\n\n")[1])
