@@ -13,6 +13,11 @@ hypot(1, 1) = 1.4 %; Dp = 0.8 D0, so C_Dp = C_D0 / 0.64. C_D0 0.80,
 ratio 0.53: converging. study_levels keeps the three levels and drops
 the source, whose C_D0 (0.99) must appear nowhere; the GCI is computed
 over 40 / 27 / 18 cells. A level not run is named with its command.
+
+start_transient_lines on descent series held constant in each 0.5 s
+bin: 5.0, 4.0, 5.5, 6.0, 5.8 m/s gives the bins, "lowest 4.00 m/s at
+0.5-1 s, then highest 6.00 at 1.5-2 s; last 5.80"; a series falling bin
+by bin (6.0, 5.9, 5.8) has its lowest in the last bin and says so.
 """
 
 from checks import check, finish
@@ -77,5 +82,29 @@ check("a level not run is named with its command",
       "| 40 | — | t-40 | not run (`bin/canopy-validate run t-40`) |" in text
       and "needs three complete runs, has 2" in text,
       [r for r in text.splitlines() if "t-40" in r])
+
+
+
+def series_record(bins, width=0.5, per_bin=10):
+    """A record whose descent series holds bins[k] over bin k."""
+    t = [k * width + (j + 0.5) * width / per_bin
+         for k in range(len(bins)) for j in range(per_bin)]
+    v_ = [b for b in bins for _ in range(per_bin)]
+    return {"complete": True, "analysis": {"steady": {"start": 1.0},
+                                           "descentSeries": {"t": t,
+                                                             "v": v_}}}
+
+
+text = "\n".join(v.start_transient_lines(
+    [(runs[0], series_record([5.0, 4.0, 5.5, 6.0, 5.8]))], 0.5, "Title:"))
+check("a dip and a recovery: the bins, the lowest, the highest after it",
+      text.startswith("Title:") and "5.00, 4.00, 5.50, 6.00, 5.80 m/s in 0.5 "
+      "s bins; lowest 4.00 m/s at 0.5-1 s, then highest 6.00 at 1.5-2 s; "
+      "last 5.80." in text, [l for l in text.splitlines() if l.startswith("- ")])
+text = "\n".join(v.start_transient_lines(
+    [(runs[0], series_record([6.0, 5.9, 5.8]))]))
+check("the lowest in the last bin", "lowest 5.80 m/s at 1-1.5 s, the last "
+      "bin." in text and "highest" not in text,
+      [l for l in text.splitlines() if l.startswith("- ")])
 
 finish()

@@ -4,12 +4,14 @@ Usage: python3 figures.py mainjob <case dir> <wall seconds>
        python3 figures.py levels [study]
 Prints BENCH lines (name value unit) and '# ' comment lines.
 
-mainjob: C_D0 of the case over the interval the 7 ft study reads (the
-steady interval of its first run in python/canopyfoam/validation.py),
-against the finest run of the study resolution7ftHeld and its GCI (bin/
-canopy-validate converged resolution7ftHeld, from the committed records);
-then both over the main job's own interval (run 7ft-default's), when the
-finest run is in build/validation.
+mainjob: C_D0 of the case over the interval the 7 ft resolution study
+resolution7ftHeld reads (the steady interval of its first run in
+python/canopyfoam/validation.py), against the converged value of the
+study the 7 ft reference names (report.py's convergedStudy: its finest
+run and GCI, bin/canopy-validate converged <study>, from the committed
+records); then both over the main job's own interval (run 7ft-default's),
+when the finest run is in build/validation and its series covers that
+interval.
 
 levels: for each run of a resolution study (default resolution7ftHeld;
 resolution7ftMapped: the levels that continue a coarser run) found in
@@ -49,8 +51,9 @@ def main_job(case_dir, wall):
           % (cd0, t0, t1, a["descentVelocity"]["mean"]))
     print("BENCH parachute_main_job_wall_time %.0f s" % wall)
     print("BENCH parachute_main_job_C_D0 %.4f" % cd0)
+    study = rep.REFERENCES["7ft"]["convergedStudy"]
     try:
-        conv = val.converged(STUDY)["C_D0 (weight)"]
+        conv = val.converged(study)["C_D0 (weight)"]
     except SystemExit as e:
         print("# no converged value: %s" % e)
         return
@@ -68,6 +71,11 @@ def main_job(case_dir, wall):
     if val.run_state(finest) != "complete":
         print("# %s not in build/validation: no comparison over %g-%g s"
               % (finest.ident, job.steady_start, job.steady_end))
+        return
+    if rep.load_case(finest.case_dir).t[-1] < job.steady_end:
+        print("# %s ends before %g s: no comparison over %g-%g s"
+              % (finest.ident, job.steady_end, job.steady_start,
+                 job.steady_end))
         return
     own = rep.analyse(case_dir, steady_start=job.steady_start,
                       steady_end=job.steady_end)["dragCoefficient"][
