@@ -2477,6 +2477,21 @@ def prepare(run):
                                   run.rest_state_of, e))
 
 
+def continue_options(options):
+    """A run's Allrun options for going on with it (-continue): those
+    that start a run afresh (-mapFieldsFrom DIR: canopy-run-case refuses
+    it with -continue) left out."""
+    out, skip = [], False
+    for option in options:
+        if skip:
+            skip = False
+        elif option == "-mapFieldsFrom":
+            skip = True
+        else:
+            out.append(option)
+    return out
+
+
 def execute(run, ranks, resume=False):
     """Run a case afresh, or (resume) continue its stopped run from its
     latest written time (bin/canopy-run-case -continue); the wall time
@@ -2492,7 +2507,8 @@ def execute(run, ranks, resume=False):
         prepare(run)
     record_code_version(run.case_dir, resume)
     cmd = [os.path.join(run.case_dir, "Allrun"), "-np", str(ranks)]
-    cmd += run.options + (["-continue"] if resume else [])
+    cmd += ((continue_options(run.options) + ["-continue"]) if resume
+            else run.options)
     start = time.time()
     log = os.path.join(RUN_ROOT, run.ident + ".out")
     print("canopy-validate: %s %s(%s) in %s, output in %s"
