@@ -1235,14 +1235,25 @@ INFLATED_EDGE = 0.56 / 27          # the fabric's edge over D0 (0.044 m)
 INFLATED_START = 2.0
 
 
-def fine_cloth_edits(cells, narrow=True):
-    """The 0.044 m fabric edge at `cells` across D0, and the narrow
-    refinement unless narrow is False."""
-    edits = [(MESH_DICT, "edgeLengthPerCell",
-              "%.7g" % (INFLATED_EDGE * cells))]
-    if narrow:
-        edits.append((MESH_DICT, "refinement", NARROW_REFINEMENT))
-    return edits
+NARROW_EDIT = (MESH_DICT, "refinement", NARROW_REFINEMENT)
+
+
+def cloth_edge_edit(edge, cells):
+    """The edit that sets the fabric's edge to `edge` D0 at `cells` across
+    D0 (canopyMeshDict's edgeLengthPerCell, in finest cells)."""
+    return (MESH_DICT, "edgeLengthPerCell", "%.7g" % (edge * cells))
+
+
+def mapped_start(source, cells):
+    """(Allrun options, edits) of a run that continues run `source` on
+    `cells` across D0: its latest air fields mapped onto this mesh
+    (canopy-run-case -mapFieldsFrom), its canopy at rest in the frame
+    (rest_state_of, REST_STATE), every node at the payload's last
+    velocity."""
+    return (["-cellsPerDiameter", "%d" % cells,
+             "-mapFieldsFrom", os.path.join("..", source)],
+            [(PROPS, "initialState", '"%s"' % REST_STATE),
+             (PROPS, "initialVelocity", SOURCE_PAYLOAD_VELOCITY)])
 
 
 def seven_inflated(ident, cells, source, speed, narrow=True, end=5):
@@ -1250,14 +1261,13 @@ def seven_inflated(ident, cells, source, speed, narrow=True, end=5):
     frame, every node and the air at `speed` [m/s], cells across D0, the
     0.044 m cloth, to end [s], read from INFLATED_START."""
     layout = "the narrow refinement" if narrow else "the tutorial's refinement"
-    edge, refinement = (fine_cloth_edits(cells, narrow) + [None])[:2]
-    edits = [edge,
+    edits = [cloth_edge_edit(INFLATED_EDGE, cells),
              (PROPS, "initialState", '"%s"' % REST_STATE),
              (PROPS, "initialVelocity", "(0 0 %g)" % -speed),
              ("0.orig/U", "internalField", "uniform (0 0 %g)" % speed),
              ("system/controlDict", "endTime", "%g" % end)]
-    if refinement:
-        edits.append(refinement)
+    if narrow:
+        edits.append(NARROW_EDIT)
     return Run(ident, SEVEN, "%s's inflated canopy (fabric edge 0.044 m) "
                "descending at %g m/s, %d cells across D0, %s, to %g s; "
                "interval %g-%g s" % (source, speed, cells, layout, end,
@@ -1287,8 +1297,9 @@ RUNS += [
     Run(FINE_CLOTH_SOURCE, SEVEN, "18 cells across D0, the narrow "
         "refinement, the tutorial's cloth and load with the fabric's edge "
         "0.044 m (0.37 finest cells), from rest to 10 s; interval 6-10 s",
-        ["-cellsPerDiameter", "18"], fine_cloth_edits(18)
-        + [("system/controlDict", "endTime", "10")],
+        ["-cellsPerDiameter", "18"],
+        [cloth_edge_edit(INFLATED_EDGE, 18), NARROW_EDIT,
+         ("system/controlDict", "endTime", "10")],
         reference="7ft", steady_start=6, steady_end=10),
 ]
 
@@ -1301,17 +1312,14 @@ def seven_mapped(ident, cells, source, end=4, start=1.0, edits=(),
     payload's last velocity; the 0.044 m cloth on the narrow refinement,
     to end [s], read from start [s]; more edits and their `setting` (for
     the label) if given."""
-    edge, refinement = fine_cloth_edits(cells)
+    options, start_edits = mapped_start(source, cells)
     return Run(ident, SEVEN, "%s's air and inflated canopy (fabric edge "
                "0.044 m) mapped onto %d cells across D0, the narrow "
                "refinement%s, to %g s; interval %g-%g s"
-               % (source, cells, setting, end, start, end),
-               ["-cellsPerDiameter", "%d" % cells,
-                "-mapFieldsFrom", os.path.join("..", source)],
-               [edge, (PROPS, "initialState", '"%s"' % REST_STATE),
-                (PROPS, "initialVelocity", SOURCE_PAYLOAD_VELOCITY),
-                ("system/controlDict", "endTime", "%g" % end), refinement]
-               + list(edits),
+               % (source, cells, setting, end, start, end), options,
+               [cloth_edge_edit(INFLATED_EDGE, cells)] + start_edits
+               + [("system/controlDict", "endTime", "%g" % end),
+                  NARROW_EDIT] + list(edits),
                reference="7ft", steady_start=start, steady_end=end,
                rest_state_of=source)
 
@@ -1545,17 +1553,13 @@ T10_FINE_SOURCE = "T10-skirt-cpd13-cloth0.446-80s"
 RUNS += [ten(T10_FINE_SOURCE, "163 kg on a guide wire, the extended skirt, "
              "box 8 D0 wide, 13 cells across D0, the fabric's edge 0.446 m "
              "(0.54 finest cells)", ["-cellsPerDiameter", "13"],
-             edits=[(MESH_DICT, "edgeLengthPerCell",
-                     "%.7g" % (T10_FINE_EDGE * 13))], start=50, end=80)]
+             edits=[cloth_edge_edit(T10_FINE_EDGE, 13)], start=50, end=80)]
 RUNS += [ten("T10-mapped-cpd%d" % n, "163 kg on a guide wire, the extended "
              "skirt: %s's air and inflated canopy (fabric edge 0.446 m) "
              "mapped onto %d cells across D0" % (T10_FINE_SOURCE, n),
-             ["-cellsPerDiameter", "%d" % n,
-              "-mapFieldsFrom", os.path.join("..", T10_FINE_SOURCE)],
-             edits=[(MESH_DICT, "edgeLengthPerCell",
-                     "%.7g" % (T10_FINE_EDGE * n)),
-                    (PROPS, "initialState", '"%s"' % REST_STATE),
-                    (PROPS, "initialVelocity", SOURCE_PAYLOAD_VELOCITY)],
+             mapped_start(T10_FINE_SOURCE, n)[0],
+             edits=[cloth_edge_edit(T10_FINE_EDGE, n)]
+             + mapped_start(T10_FINE_SOURCE, n)[1],
              start=2, end=12, rest_state_of=T10_FINE_SOURCE)
          for n in (13, 20, 30)]
 # Free flight over a long window (issue 34 item 5): the suspension's angle
@@ -4143,7 +4147,7 @@ def air_levels_lines(results):
             continue
         d0, v, cd, half, breathing = level_values(a)
         dp = a["projectedDiameter"]["mean"] / d0
-        wall = rec.get("wall", rec.get("wallTime"))
+        wall = rec["wall"]
         rows.append("| %g | %s | %s | %.2f ± %s (%+.2f) | %.3f%s | %.3f | "
                     "%.3f | %s | %.2f | %s |" % (
                         cpd, _f(rec.get("cells"), "%d"), run.ident,
@@ -4196,7 +4200,7 @@ def start_transient_lines(results, bin_width=0.5,
                         ", ".join("%.2f" % m for _, m in means), bin_width,
                         text))
     if not lines:
-        return ["The descent from the start: no run complete.", ""]
+        return ["%s no run complete." % title, ""]
     return [title, ""] + lines + [""]
 
 

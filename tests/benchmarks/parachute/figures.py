@@ -18,8 +18,8 @@ resolution7ftMapped: the levels that continue a coarser run) found in
 build/validation (the study's own runs, 2 ranks), over the interval of
 the study's first run: cells, wall seconds per time step (ClockTime
 increments of the solver log) and coupling iterations per step
-(canopy.dat). The study's runs that set no resolution of their own (a
-source run) are left out.
+(canopy.dat). A source run the study also lists (one whose start
+differs from the first run's: validation.study_levels) is left out.
 """
 
 import os
