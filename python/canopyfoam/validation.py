@@ -1562,6 +1562,29 @@ RUNS += [ten("T10-mapped-cpd%d" % n, "163 kg on a guide wire, the extended "
              + mapped_start(T10_FINE_SOURCE, n)[1],
              start=2, end=12, rest_state_of=T10_FINE_SOURCE)
          for n in (13, 20, 30)]
+# The T-10's time step (issue 31 §3.3) at 20 cells across D0, the finest
+# level a second run affords (the 30-cell level takes 85 min): maxCo 0.25
+# and maxDeltaT 0.025 s against the tutorial's 0.5 and 0.05 s
+RUNS += [ten("T10-mapped-cpd20-co0.25", "163 kg on a guide wire, the "
+             "extended skirt: %s's air and inflated canopy (fabric edge "
+             "0.446 m) mapped onto 20 cells across D0, maxCo 0.25 (maxDeltaT "
+             "0.025)" % T10_FINE_SOURCE, mapped_start(T10_FINE_SOURCE, 20)[0],
+             edits=[cloth_edge_edit(T10_FINE_EDGE, 20)]
+             + mapped_start(T10_FINE_SOURCE, 20)[1]
+             + [("system/controlDict", "maxCo", "0.25"),
+                ("system/controlDict", "maxDeltaT", "0.025")],
+             start=2, end=12, rest_state_of=T10_FINE_SOURCE)]
+# The T-10's structure resolution (issue 31 §3.3) at 13 cells across D0,
+# from rest to 80 s and read over 50-80 s as the payload sweep is: the
+# fabric's edge at the tutorial's 1.25 finest cells (1.03 m,
+# T10-skirt-cpd13-m163), 0.83 (0.683 m) and 0.54 (0.446 m,
+# T10_FINE_SOURCE), ratios 1.51 and 1.53
+RUNS += [ten("T10-skirt-cpd13-edge0.83", "163 kg on a guide wire, the "
+             "extended skirt, box 8 D0 wide, 13 cells across D0, the "
+             "fabric's edge 0.683 m (0.83 finest cells)",
+             ["-cellsPerDiameter", "13"],
+             edits=[(MESH_DICT, "edgeLengthPerCell", "0.83")], start=50,
+             end=80)]
 # Free flight over a long window (issue 34 item 5): the suspension's angle
 # to the vertical, the swing's period and the glide, the T-10 at 13 cells
 # across D0 (its resolution study puts 11 outside 13 and 20) to 60 s,
@@ -2112,6 +2135,15 @@ STUDIES = [
      "frame at the payload's speed), to 12 s, read over 2-12 s"
      % T10_FINE_SOURCE,
      ["T10-mapped-cpd%d" % n for n in (13, 20, 30)] + [T10_FINE_SOURCE]),
+    ("timeStepT10Mapped", "T-10 at 163 kg on a guide wire, the extended "
+     "skirt: the time step at 20 cells across D0 (maxCo 0.5 and 0.25; the "
+     "0.446 m cloth continuing %s at 80 s, to 12 s, read over 2-12 s)"
+     % T10_FINE_SOURCE, ["T10-mapped-cpd20", "T10-mapped-cpd20-co0.25"]),
+    ("edgeLengthT10", "T-10 at 163 kg on a guide wire, the extended skirt: "
+     "the structure's resolution at 13 cells across D0 (fabric edge 1.25, "
+     "0.83 and 0.54 finest cells, 1.03, 0.683 and 0.446 m; from rest to 80 "
+     "s, read over 50-80 s)",
+     ["T10-skirt-cpd13-m163", "T10-skirt-cpd13-edge0.83", T10_FINE_SOURCE]),
     ("timeStep7ftMapped", "7 ft canopy on the guide wire: the time step "
      "at 27 cells across D0 (maxCo 0.5 and 0.25; the 0.044 m cloth "
      "continuing %s at 10 s, to 4 s, read over 1-4 s)" % FINE_CLOTH_SOURCE,
@@ -3616,8 +3648,8 @@ def t10_handbook_cd0(mass=163.0, rho=1.2, g=9.81, d0=10.7):
 
 
 def fabric_edge_cells(run):
-    """The fabric's edge in finest cells of a run on the 7 ft tutorial
-    (its edgeLengthPerCell edit, else the tutorial's 1.25)."""
+    """The fabric's edge in finest cells of a run (its edgeLengthPerCell
+    edit, else its tutorial's canopyMeshDict entry)."""
     edits = dict((e[1], e[2]) for e in run.edits if e[0] == MESH_DICT)
     path = os.path.join(TOP, "tutorials", run.tutorial, MESH_DICT)
     if "edgeLengthPerCell" in edits:
@@ -4054,8 +4086,8 @@ def level_values(a):
 
 def edge_levels_lines(results):
     """The fabric's edge varied at one air resolution (studies
-    edgeLength7ft, edgeLength7ftLong, and edgeLength7ftCpd27 through
-    over_window), from the records, as markdown: per
+    edgeLength7ft, edgeLength7ftLong, edgeLength7ftCpd27 through
+    over_window, and edgeLengthT10), from the records, as markdown: per
     level, coarse to fine, the edge in finest cells and in metres (edge
     cells times D0 over cells across D0), C_D0 with its 95 % relative
     half-width (twice the descent's), Dp/D0, the skirt's mean radius and
@@ -6396,6 +6428,11 @@ def write_report():
             md += start_transient_lines(
                 levels, 1.0, "Each level's descent from the mapped start:")
             md += MAPPED_T10_PROSE
+        if name == "timeStepT10Mapped":
+            md += window_change_lines(results, "The time step halved, "
+                                      "over 2-12 s")
+        if name == "edgeLengthT10":
+            md += edge_study_lines(results)
         if name == "timeStep7ftMapped":
             md += window_change_lines(results, "The time step halved, "
                                       "over 1-4 s")

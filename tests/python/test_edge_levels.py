@@ -13,6 +13,11 @@ coarse first. C_D0 0.70, 0.80, 0.84 (edge 1.5, 1.0, 0.667): +14.3 % then
 +14.3 %, ratio 1.40: diverging. 0.70, 0.705, 0.80: the first change
 (+0.7 %) lies within 1.4 %, so no verdict on the order. A level not run
 is named with its command; one level alone gives no changes.
+
+A run of another tutorial without an edge edit (the T-10 at 13 cells
+across D0, study edgeLengthT10) takes that tutorial's edgeLengthPerCell
+(1.25), not the 7 ft one's: with D0 = 10.7 m its edge is 1.25 x 10.7 /
+13 = 1.029 m, listed above the 0.54-cell level (0.446 m).
 """
 
 from checks import check, finish
@@ -89,5 +94,20 @@ text = lines(None, None, 0.70)
 check("one level: no changes",
       "needs two levels run" in text and "- 1.5 to" not in text,
       text.splitlines()[-2])
+
+ten_default = v.Run("t-ten-default", v.T10, "synthetic",
+                    ["-cellsPerDiameter", "13"])
+ten_fine = v.Run("t-ten-fine", v.T10, "synthetic",
+                 ["-cellsPerDiameter", "13"],
+                 [(v.MESH_DICT, "edgeLengthPerCell", "0.5417")])
+ten_record = record(0.79)
+ten_record["analysis"]["parameters"]["nominalDiameter"]["value"] = 10.7
+text = "\n".join(v.edge_levels_lines([(ten_fine, ten_record),
+                                      (ten_default, ten_record)]))
+rows = text.splitlines()
+check("another tutorial's run takes that tutorial's edge",
+      v.fabric_edge_cells(ten_default) == 1.25
+      and rows[2].startswith("| 1.25 | 1.029 | t-ten-default |")
+      and rows[3].startswith("| 0.5417 | 0.446 | t-ten-fine |"), rows[2:4])
 
 finish()
