@@ -18,8 +18,12 @@ resolution7ftMapped: the levels that continue a coarser run) found in
 build/validation (the study's own runs, 2 ranks), over the interval of
 the study's first run: cells, wall seconds per time step (ClockTime
 increments of the solver log) and coupling iterations per step
-(canopy.dat). A source run the study also lists (one whose start
-differs from the first run's: validation.study_levels) is left out.
+(canopy.dat). A run not in build/validation is read from its committed
+record (docs/validation/runs), which holds the whole run's wall time and
+steps (so its cost per step includes the meshing and the start) and the
+coupling iterations over its own steady interval; a comment line says
+so. A source run the study also lists (one whose start differs from the
+first run's: validation.study_levels) is left out.
 """
 
 import os
@@ -114,17 +118,30 @@ def levels(study=STUDY):
         ident = run.ident
         n = val.cells_per_diameter(run)
         log = val.solver_log(run.case_dir)
-        if val.run_state(run) != "complete":
-            print("# %s: not in build/validation (bin/canopy-validate run "
-                  "%s)" % (ident, ident))
-            continue
-        cost, steps = step_costs(log, t0, t1)
-        series = rep.load_case(run.case_dir)
-        m = (series.t >= t0) & (series.t <= t1)
-        its = series.column("coupling_iterations")[m].mean()
-        cells = val.cell_count(run.case_dir)
-        print("# %s: %d cells, %d steps in %g-%g s" % (ident, cells, steps,
-                                                       t0, t1))
+        if val.run_state(run) == "complete":
+            cost, steps = step_costs(log, t0, t1)
+            series = rep.load_case(run.case_dir)
+            m = (series.t >= t0) & (series.t <= t1)
+            its = series.column("coupling_iterations")[m].mean()
+            cells = val.cell_count(run.case_dir)
+            print("# %s: %d cells, %d steps in %g-%g s"
+                  % (ident, cells, steps, t0, t1))
+        else:
+            record, why = val.archive.load(val.ARCHIVE_DIR, run)
+            if record is None or not record["complete"]:
+                print("# %s: not in build/validation and %s (bin/canopy-"
+                      "validate run %s)" % (ident, why or "incomplete",
+                                            ident))
+                continue
+            a = record["analysis"]
+            cells, steps = record["cells"], a["steps"]
+            cost = record["wall"] / steps
+            its = a["coupling"]["meanIterationsSteady"]
+            print("# %s: %d cells, from its committed record: the whole "
+                  "run's %d steps on %d ranks (cost per step with the "
+                  "meshing and the start), iterations over %g-%g s"
+                  % (ident, cells, steps, record["ranks"],
+                     run.steady_start, run.steady_end))
         name = "parachute_%scpd%g" % ("" if study == STUDY else
                                        study + "_", n)
         print("BENCH %s_cells %d cells" % (name, cells))
