@@ -4,14 +4,13 @@ Usage: python3 figures.py mainjob <case dir> <wall seconds>
        python3 figures.py levels [study]
 Prints BENCH lines (name value unit) and '# ' comment lines.
 
-mainjob: C_D0 of the case over the interval the 7 ft resolution study
-resolution7ftHeld reads (the steady interval of its first run in
-python/canopyfoam/validation.py), against the converged value of the
-study the 7 ft reference names (report.py's convergedStudy: its finest
-run and GCI, bin/canopy-validate converged <study>, from the committed
-records); then both over the main job's own interval (run 7ft-default's),
-when the finest run is in build/validation and its series covers that
-interval.
+mainjob: C_D0 of the case over the main job's own interval (run
+7ft-default's steady interval in python/canopyfoam/validation.py, the
+last third its Allrun's report reads), against the converged value of
+the study the 7 ft reference names (report.py's convergedStudy: its
+finest run and GCI, bin/canopy-validate converged <study>, from the
+committed records); then both over that interval, when the finest run
+is in build/validation and its series covers it.
 
 levels: for each run of a resolution study (default resolution7ftHeld;
 resolution7ftMapped: the levels that continue a coarser run) found in
@@ -48,7 +47,8 @@ def interval(study=STUDY):
 
 
 def main_job(case_dir, wall):
-    t0, t1 = interval()
+    job = val.RUN_BY_ID["7ft-default"]
+    t0, t1 = job.steady_start, job.steady_end
     a = rep.analyse(case_dir, steady_start=t0, steady_end=t1)
     cd0 = a["dragCoefficient"]["weightBalance"]
     print("# the main job: C_D0 %.4f over %g-%g s, descent %.3f m/s"
@@ -68,29 +68,23 @@ def main_job(case_dir, wall):
                                  conv["extrapolated"]))
     print("BENCH parachute_main_job_C_D0_error %.4f fraction"
           % ((cd0 - ref) / ref))
-    # The same comparison over the main job's own interval (its Allrun's
-    # report reads the last third), the finest level read over it too
-    job = val.RUN_BY_ID["7ft-default"]
+    # The same comparison with the finest level read over the main job's
+    # interval too
     finest = val.RUN_BY_ID[conv["runs"][0]]
     if val.run_state(finest) != "complete":
         print("# %s not in build/validation: no comparison over %g-%g s"
-              % (finest.ident, job.steady_start, job.steady_end))
+              % (finest.ident, t0, t1))
         return
-    if rep.load_case(finest.case_dir).t[-1] < job.steady_end:
+    if rep.load_case(finest.case_dir).t[-1] < t1:
         print("# %s ends before %g s: no comparison over %g-%g s"
-              % (finest.ident, job.steady_end, job.steady_start,
-                 job.steady_end))
+              % (finest.ident, t1, t0, t1))
         return
-    own = rep.analyse(case_dir, steady_start=job.steady_start,
-                      steady_end=job.steady_end)["dragCoefficient"][
-                          "weightBalance"]
-    fine = rep.analyse(finest.case_dir, steady_start=job.steady_start,
-                       steady_end=job.steady_end)["dragCoefficient"][
-                           "weightBalance"]
+    fine = rep.analyse(finest.case_dir, steady_start=t0,
+                       steady_end=t1)["dragCoefficient"]["weightBalance"]
     print("# over the main job's %g-%g s: C_D0 %.4f against %.4f (%s)"
-          % (job.steady_start, job.steady_end, own, fine, finest.ident))
+          % (t0, t1, cd0, fine, finest.ident))
     print("BENCH parachute_main_job_C_D0_error_own_window %.4f fraction"
-          % ((own - fine) / fine))
+          % ((cd0 - fine) / fine))
 
 
 def step_costs(log, t0, t1):
