@@ -4833,10 +4833,12 @@ MAPPED_T10_PROSE = [
     "is not converged. Its coupling takes 4.4 iterations a step (2.9 and "
     "3.5 at 13 and 20 cells, and 4.5 at 20 cells with half the time "
     "step, study timeStepT10Mapped): the target of at most 2 a step at "
-    "the finest level is not met for the T-10. Its stabiliser (2.7 "
-    "kg/m^2, 72 times the cloth's, its balance started from the last "
-    "step's acceleration) is the candidate cause, not yet tested (section "
-    "\"The stabiliser's predictor\").", "",
+    "the finest level is not met for the T-10. Neither IQN-ILS nor the "
+    "stabiliser's triangle-mean filter brings it there (study "
+    "couplingT10: 3.34 and 3.50 a step at 20 cells with IQN-ILS and "
+    "Aitken); the stabiliser's balance (2.7 kg/m^2, 72 times the cloth's, "
+    "started from the last step's acceleration; section \"The "
+    "stabiliser's predictor\") is the next candidate.", "",
     "Against published values: the T-10's average descent of 22 ft/s "
     "(6.7 m/s) with at most 163 kg (Mills Manufacturing; 19-23 ft/s by "
     "the jumper's weight and the air's density, globalsecurity.org) is "
@@ -4895,9 +4897,8 @@ TIME_STEP_T10_PROSE = [
     "the resolution's (GCI 8.5 % in C_D0, study resolutionT10Mapped). The "
     "coupling takes more iterations at the shorter step (4.5 a step "
     "against 3.5), so a shorter step does not bring the T-10's count "
-    "towards the target of 2 (a candidate cause, not tested here: the "
-    "stabiliser's balance, which converges slowly where its mass is many "
-    "times the cloth's; section \"The stabiliser's predictor\").", ""]
+    "towards the target of 2 (nor do IQN-ILS or the stabiliser's filter: "
+    "study couplingT10).", ""]
 
 
 def study_levels(results):
