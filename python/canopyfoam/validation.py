@@ -1598,6 +1598,12 @@ RUNS += [ten_coupling("T10-mapped-cpd13-filter", "the stabiliser's "
                       (PROPS, "coupling/addedMass/filter", "triangleMean")),
          ten_coupling("T10-mapped-cpd13-iqn", "IQN-ILS (initial 1, reuse "
                       "8, filter 1e-3) in place of Aitken", T10_IQN)]
+# ... the stabiliser's balance started from zero each step (predictor
+# zero, the 7 ft tutorial's) instead of the last step's acceleration
+RUNS += [ten_coupling("T10-mapped-cpd13-zero", "the stabiliser's balance "
+                      "started from zero each step (addedMass.predictor "
+                      "zero)", (PROPS, "coupling/addedMass/predictor",
+                                "zero"))]
 # ... and IQN-ILS at 20 cells, against T10-mapped-cpd20 (3.5 a step)
 RUNS += [ten_coupling("T10-mapped-cpd20-iqn", "IQN-ILS (initial 1, reuse 8, "
                       "filter 1e-3) in place of Aitken", T10_IQN, cells=20)]
@@ -2168,11 +2174,12 @@ STUDIES = [
      % T10_FINE_SOURCE, ["T10-mapped-cpd20", "T10-mapped-cpd20-co0.25"]),
     ("couplingT10", "T-10 at 163 kg on a guide wire, the extended skirt: "
      "the coupling's iterations at 13 cells across D0 with the stabiliser's "
-     "triangle-mean filter and with IQN-ILS, and at 20 cells with IQN-ILS "
+     "triangle-mean filter, with IQN-ILS and with the stabiliser's "
+     "predictor zero, and at 20 cells with IQN-ILS "
      "(the 0.446 m cloth continuing "
      "%s at 80 s, to 12 s, read over 2-12 s)" % T10_FINE_SOURCE,
      ["T10-mapped-cpd13", "T10-mapped-cpd13-filter", "T10-mapped-cpd13-iqn",
-      "T10-mapped-cpd20", "T10-mapped-cpd20-iqn"]),
+      "T10-mapped-cpd13-zero", "T10-mapped-cpd20", "T10-mapped-cpd20-iqn"]),
     ("edgeLengthT10", "T-10 at 163 kg on a guide wire, the extended skirt: "
      "the structure's resolution at 13 cells across D0 (fabric edge 1.25, "
      "0.83 and 0.54 finest cells, 1.03, 0.683 and 0.446 m; from rest to 80 "
