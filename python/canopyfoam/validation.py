@@ -1604,9 +1604,14 @@ RUNS += [ten_coupling("T10-mapped-cpd13-zero", "the stabiliser's balance "
                       "started from zero each step (addedMass.predictor "
                       "zero)", (PROPS, "coupling/addedMass/predictor",
                                 "zero"))]
-# ... and IQN-ILS at 20 cells, against T10-mapped-cpd20 (3.5 a step)
+# ... and IQN-ILS and predictor zero at 20 cells, against
+# T10-mapped-cpd20 (3.5 a step)
 RUNS += [ten_coupling("T10-mapped-cpd20-iqn", "IQN-ILS (initial 1, reuse 8, "
-                      "filter 1e-3) in place of Aitken", T10_IQN, cells=20)]
+                      "filter 1e-3) in place of Aitken", T10_IQN, cells=20),
+         ten_coupling("T10-mapped-cpd20-zero", "the stabiliser's balance "
+                      "started from zero each step (addedMass.predictor "
+                      "zero)", (PROPS, "coupling/addedMass/predictor",
+                                "zero"), cells=20)]
 # The T-10's structure resolution (issue 31 §3.3) at 13 cells across D0,
 # from rest to 80 s and read over 50-80 s as the payload sweep is: the
 # fabric's edge at the tutorial's 1.25 finest cells (1.03 m,
@@ -2175,11 +2180,12 @@ STUDIES = [
     ("couplingT10", "T-10 at 163 kg on a guide wire, the extended skirt: "
      "the coupling's iterations at 13 cells across D0 with the stabiliser's "
      "triangle-mean filter, with IQN-ILS and with the stabiliser's "
-     "predictor zero, and at 20 cells with IQN-ILS "
+     "predictor zero, and at 20 cells with the last two "
      "(the 0.446 m cloth continuing "
      "%s at 80 s, to 12 s, read over 2-12 s)" % T10_FINE_SOURCE,
      ["T10-mapped-cpd13", "T10-mapped-cpd13-filter", "T10-mapped-cpd13-iqn",
-      "T10-mapped-cpd13-zero", "T10-mapped-cpd20", "T10-mapped-cpd20-iqn"]),
+      "T10-mapped-cpd13-zero", "T10-mapped-cpd20", "T10-mapped-cpd20-iqn",
+      "T10-mapped-cpd20-zero"]),
     ("edgeLengthT10", "T-10 at 163 kg on a guide wire, the extended skirt: "
      "the structure's resolution at 13 cells across D0 (fabric edge 1.25, "
      "0.83 and 0.54 finest cells, 1.03, 0.683 and 0.446 m; from rest to 80 "
