@@ -1554,38 +1554,36 @@ RUNS += [ten(T10_FINE_SOURCE, "163 kg on a guide wire, the extended skirt, "
              "box 8 D0 wide, 13 cells across D0, the fabric's edge 0.446 m "
              "(0.54 finest cells)", ["-cellsPerDiameter", "13"],
              edits=[cloth_edge_edit(T10_FINE_EDGE, 13)], start=50, end=80)]
-RUNS += [ten("T10-mapped-cpd%d" % n, "163 kg on a guide wire, the extended "
-             "skirt: %s's air and inflated canopy (fabric edge 0.446 m) "
-             "mapped onto %d cells across D0" % (T10_FINE_SOURCE, n),
-             mapped_start(T10_FINE_SOURCE, n)[0],
-             edits=[cloth_edge_edit(T10_FINE_EDGE, n)]
-             + mapped_start(T10_FINE_SOURCE, n)[1],
-             start=2, end=12, rest_state_of=T10_FINE_SOURCE)
-         for n in (13, 20, 30)]
+def ten_mapped(ident, cells, setting="", edits=()):
+    """The T-10 at 163 kg on the guide wire continuing T10_FINE_SOURCE on
+    `cells` across D0 (mapped_start), the 0.446 m cloth, to 12 s, read
+    over 2-12 s; more edits and their `setting` (for the label) if
+    given."""
+    options, start_edits = mapped_start(T10_FINE_SOURCE, cells)
+    return ten(ident, "163 kg on a guide wire, the extended skirt: %s's "
+               "air and inflated canopy (fabric edge 0.446 m) mapped onto "
+               "%d cells across D0%s" % (T10_FINE_SOURCE, cells,
+                                         ", " + setting if setting else ""),
+               options, edits=[cloth_edge_edit(T10_FINE_EDGE, cells)]
+               + start_edits + list(edits),
+               start=2, end=12, rest_state_of=T10_FINE_SOURCE)
+
+
+RUNS += [ten_mapped("T10-mapped-cpd%d" % n, n) for n in (13, 20, 30)]
 # The T-10's time step (issue 31 §3.3) at 20 cells across D0, the finest
-# level a second run affords (the 30-cell level takes 85 min): maxCo 0.25
+# level a second run affords (the 30-cell level takes 65 min): maxCo 0.25
 # and maxDeltaT 0.025 s against the tutorial's 0.5 and 0.05 s
-RUNS += [ten("T10-mapped-cpd20-co0.25", "163 kg on a guide wire, the "
-             "extended skirt: %s's air and inflated canopy (fabric edge "
-             "0.446 m) mapped onto 20 cells across D0, maxCo 0.25 (maxDeltaT "
-             "0.025)" % T10_FINE_SOURCE, mapped_start(T10_FINE_SOURCE, 20)[0],
-             edits=[cloth_edge_edit(T10_FINE_EDGE, 20)]
-             + mapped_start(T10_FINE_SOURCE, 20)[1]
-             + [("system/controlDict", "maxCo", "0.25"),
-                ("system/controlDict", "maxDeltaT", "0.025")],
-             start=2, end=12, rest_state_of=T10_FINE_SOURCE)]
+RUNS += [ten_mapped("T10-mapped-cpd20-co0.25", 20,
+                    "maxCo 0.25 (maxDeltaT 0.025)",
+                    [("system/controlDict", "maxCo", "0.25"),
+                     ("system/controlDict", "maxDeltaT", "0.025")])]
 # Why the T-10's coupling takes 3-4.4 iterations a step (issue 31 §2;
 # the 7 ft canopy's 1.0-1.4): the 13-cell level with the 7 ft tutorial's
 # stabiliser filter (the balance from each triangle's mean acceleration),
-# and with IQN-ILS in place of Aitken's relaxation
+# with IQN-ILS in place of Aitken's relaxation, and with the stabiliser's
+# balance started from zero each step
 def ten_coupling(ident, setting, edit, cells=13):
-    return ten(ident, "163 kg on a guide wire, the extended skirt: %s's "
-               "air and inflated canopy (fabric edge 0.446 m) mapped onto "
-               "%d cells across D0, %s" % (T10_FINE_SOURCE, cells, setting),
-               mapped_start(T10_FINE_SOURCE, cells)[0],
-               edits=[cloth_edge_edit(T10_FINE_EDGE, cells)]
-               + mapped_start(T10_FINE_SOURCE, cells)[1] + [edit],
-               start=2, end=12, rest_state_of=T10_FINE_SOURCE)
+    return ten_mapped(ident, cells, setting, [edit])
 
 
 T10_IQN = (PROPS, "coupling/acceleration", "{ type IQN-ILS; initial 1; "
