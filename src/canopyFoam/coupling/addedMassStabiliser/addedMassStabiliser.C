@@ -26,6 +26,8 @@ Foam::addedMassStabiliser::addedMassStabiliser
 :
     triangles_(),
     mass_(),
+    ownMass_(),
+    dt_(0),
     direction_(),
     stepStartVelocity_(),
     balanceAcceleration_(),
@@ -139,6 +141,7 @@ Foam::addedMassStabiliser::addedMassStabiliser
             mass_[node] += triangleMass_[t]/3;
         }
     }
+    ownMass_ = structure.masses();
     direction_.setSize(structure.nNodes(), Zero);
     balanceAcceleration_.setSize(structure.nNodes(), Zero);
 }
@@ -206,13 +209,33 @@ void Foam::addedMassStabiliser::beginStep(canopyStructure& structure)
 Foam::tmp<Foam::vectorField>
 Foam::addedMassStabiliser::balancingForces() const
 {
+    return forcesOf(balanceAcceleration_);
+}
+
+
+Foam::tmp<Foam::scalarField>
+Foam::addedMassStabiliser::balanceChange(const vectorField& held) const
+{
+    if (!active())
+    {
+        return tmp<scalarField>(new scalarField());
+    }
+    return
+        dt_*mag(forcesOf(balanceAcceleration_ - held))
+       /max(ownMass_ + mass_, VSMALL);
+}
+
+
+Foam::tmp<Foam::vectorField>
+Foam::addedMassStabiliser::forcesOf(const vectorField& acceleration) const
+{
     if (!triangleMean_)
     {
         if (isotropic_)
         {
-            return mass_*balanceAcceleration_;
+            return mass_*acceleration;
         }
-        return mass_*(direction_ & balanceAcceleration_)*direction_;
+        return mass_*(direction_ & acceleration)*direction_;
     }
 
     // Each triangle's added mass m_t times its nodes' mean acceleration,
@@ -229,9 +252,9 @@ Foam::addedMassStabiliser::balancingForces() const
             const vector f =
                 share
                *(
-                    balanceAcceleration_[tri[0]]
-                  + balanceAcceleration_[tri[1]]
-                  + balanceAcceleration_[tri[2]]
+                    acceleration[tri[0]]
+                  + acceleration[tri[1]]
+                  + acceleration[tri[2]]
                 );
             for (const label node : tri)
             {
@@ -243,7 +266,7 @@ Foam::addedMassStabiliser::balancingForces() const
             scalar f = 0;
             for (const label node : tri)
             {
-                f += direction_[node] & balanceAcceleration_[node];
+                f += direction_[node] & acceleration[node];
             }
             for (const label node : tri)
             {
@@ -265,6 +288,7 @@ void Foam::addedMassStabiliser::update
     {
         return;
     }
+    dt_ = dt;
     if (endOfStep_)
     {
         balanceAcceleration_ = structure.accelerationState();

@@ -82,7 +82,7 @@ Foam::canopyCoupling::canopyCoupling(const fvMesh& mesh)
 :
     mesh_(mesh),
     structure_(mesh.time()),
-    step_{Zero, 0, 0, 0, 0, Zero, Zero},
+    step_{Zero, 0, 0, 0, 0, Zero, Zero, 0, -1},
     structureSolves_(0),
     converged_(false),
     structureSeconds_(0),
@@ -182,6 +182,8 @@ void Foam::canopyCoupling::beginTimeStep()
     structureSolves_ = 0;
     converged_ = false;
     step_.residual = 0;
+    step_.velocityResidual = 0;
+    step_.balanceResidual = -1;
 }
 
 
@@ -266,6 +268,9 @@ bool Foam::canopyCoupling::correctStructure(const volScalarField& p)
             parts_->forcing()
         );
     step_.residual = iterate_->residual();
+    step_.velocityResidual = iterate_->velocityResidual();
+    step_.balanceResidual =
+        parts_->addedMass().active() ? iterate_->balanceResidual() : -1;
 
     string problem;
     {

@@ -226,11 +226,15 @@ void Foam::couplingOutput::logIteration
 ) const
 {
     Info<< "canopyCoupling: iteration " << step.iterations
-        << ", interface residual " << step.residual;
+        << ", interface residual " << step.velocityResidual;
     if (worst >= 0)
     {
         Info<< " (largest at " << structure_.triangleCentres()()[worst]
             << ")";
+    }
+    if (step.balanceResidual >= 0)
+    {
+        Info<< ", balance residual " << step.balanceResidual;
     }
     Info<< ", slip " << step.slip
         << ", " << acceleration.c_str()
@@ -254,7 +258,14 @@ Foam::string Foam::couplingOutput::notConverged
     return
         "the coupling did not converge at t = " + canopyCompat::timeName(mesh_.time())
       + " in " + Foam::name(step.iterations) + " iterations (residual "
-      + Foam::name(step.residual) + ", slip " + Foam::name(step.slip)
+      + Foam::name(step.residual)
+      + (
+            step.balanceResidual >= 0
+          ? " of velocity " + Foam::name(step.velocityResidual)
+          + " and balance " + Foam::name(step.balanceResidual)
+          : string()
+        )
+      + ", slip " + Foam::name(step.slip)
       + ", tolerance " + Foam::name(tolerance) + ")";
 }
 

@@ -22,6 +22,25 @@ Foam::scalar Foam::interfaceIterate::norm(const scalarField& change) const
 }
 
 
+Foam::scalar Foam::interfaceIterate::nodalNorm
+(
+    const scalarField& change,
+    const scalarField& weights
+) const
+{
+    if (change.empty())
+    {
+        return 0;
+    }
+    if (!rms_)
+    {
+        return max(change);
+    }
+    return
+        Foam::sqrt(sum(weights*sqr(change))/max(sum(weights), VSMALL));
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::interfaceIterate::interfaceIterate
@@ -40,6 +59,8 @@ Foam::interfaceIterate::interfaceIterate
     rms_(rms),
     balanceRelaxed_(false),
     residual_(0),
+    velocityResidual_(0),
+    balanceResidual_(0),
     worst_(-1)
 {}
 
@@ -86,14 +107,27 @@ bool Foam::interfaceIterate::update
     ibForcing& forcing
 )
 {
-    // This iteration's change of the interface velocity: its norm is the
-    // residual; where it is largest goes to the log
+    // This iteration's change of the interface velocity the forcing
+    // imposes (the normal velocity; with tangential noSlip the whole
+    // velocity): its norm is the velocity residual; where it is largest
+    // goes to the log
     const scalarField target(frame_.normalVelocities(structure_));
     velocity_ = frame_.velocities(structure_);
     const scalar scale = max(Uref_, target.size() ? max(mag(target)) : 0);
-    const scalarField change(target - normalVelocity_);
-    residual_ = norm(change)/scale;
+    const scalarField change
+    (
+        forcing.noSlip()
+      ? scalarField(mag(velocity_ - heldVelocity_))
+      : scalarField(target - normalVelocity_)
+    );
+    velocityResidual_ = norm(change)/scale;
     worst_ = findMax(scalarField(mag(change)));
+    balanceResidual_ =
+        addedMass.active()
+      ? nodalNorm(addedMass.balanceChange(heldBalance_), addedMass.nodalMass())
+       /scale
+      : 0;
+    residual_ = max(velocityResidual_, balanceResidual_);
     if (!strong)
     {
         // Explicit: one structure solve per step; the PIMPLE outer loop
