@@ -216,13 +216,29 @@ Foam::addedMassStabiliser::balancingForces() const
 Foam::tmp<Foam::scalarField>
 Foam::addedMassStabiliser::balanceChange(const vectorField& held) const
 {
+    tmp<scalarField> tchange(new scalarField(triangles_.size(), Zero));
     if (!active())
     {
-        return tmp<scalarField>(new scalarField());
+        return tchange;
     }
-    return
-        dt_*mag(forcesOf(balanceAcceleration_ - held))
-       /max(ownMass_ + mass_, VSMALL);
+    scalarField& change = tchange.ref();
+
+    // Per node: the change of abar along the added mass's directions,
+    // times the share m_a/(m + m_a) of the node's mass the balance acts on
+    vectorField nodal(balanceAcceleration_ - held);
+    if (!isotropic_)
+    {
+        nodal = (direction_ & nodal)*direction_;
+    }
+    nodal *= mass_/max(ownMass_ + mass_, VSMALL);
+
+    // Per triangle: the mean over its nodes, over the step
+    forAll(triangles_, t)
+    {
+        const triFace& tri = triangles_[t];
+        change[t] = dt_*mag(nodal[tri[0]] + nodal[tri[1]] + nodal[tri[2]])/3;
+    }
+    return tchange;
 }
 
 

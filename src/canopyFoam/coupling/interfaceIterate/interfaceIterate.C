@@ -22,25 +22,6 @@ Foam::scalar Foam::interfaceIterate::norm(const scalarField& change) const
 }
 
 
-Foam::scalar Foam::interfaceIterate::nodalNorm
-(
-    const scalarField& change,
-    const scalarField& weights
-) const
-{
-    if (change.empty())
-    {
-        return 0;
-    }
-    if (!rms_)
-    {
-        return max(change);
-    }
-    return
-        Foam::sqrt(sum(weights*sqr(change))/max(sum(weights), VSMALL));
-}
-
-
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::interfaceIterate::interfaceIterate
@@ -124,8 +105,7 @@ bool Foam::interfaceIterate::update
     worst_ = findMax(scalarField(mag(change)));
     balanceResidual_ =
         addedMass.active()
-      ? nodalNorm(addedMass.balanceChange(heldBalance_), addedMass.nodalMass())
-       /scale
+      ? norm(addedMass.balanceChange(heldBalance_))/scale
       : 0;
     residual_ = max(velocityResidual_, balanceResidual_);
     if (!strong)
