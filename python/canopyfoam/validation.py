@@ -4768,10 +4768,13 @@ STUDY_CAVEATS = {
     "resolutionT10Mapped": "its levels (163 kg on the guide wire) "
     "continue one 13-cell run's state at 80 s and are read over 2-12 s, "
     "with the cloth's edge at 0.446 m where the tutorial's is 1.03 m at 13 "
-    "cells; their coupling takes 2.9, 3.5 and 4.4 iterations a step at 13, "
-    "20 and 30 cells (study couplingT10), and the breathing is not "
-    "converged (0.23 and 0.42 Hz "
-    "at 13 and 20 cells, no peak resolved at 30)",
+    "cells; the 13- and 20-cell levels are on the current coupling (the "
+    "stabiliser balanced from zero, the residual over the whole iterate: "
+    "1.5 iterations a step), the 30-cell level on the earlier one (4.4 a "
+    "step; on it the three levels gave C_D0 0.686 ± 8.5 %, extrapolated "
+    "0.639), so the levels mix two codes until the 30-cell level is "
+    "re-made; the breathing is not converged (0.18 and 0.21 Hz at 13 and "
+    "20 cells, no peak resolved at 30)",
     "resolutionT10": "its runs converged the coupling to 5e-3 only, which "
     "on the 7 ft canopy's finer levels is not converged (study "
     "relaxation7ft), and whether their wake's symmetry had broken in the "
@@ -4850,6 +4853,14 @@ MAPPED_7FT_PROSE = [
 
 # What the T-10's mapped levels show (study resolutionT10Mapped)
 MAPPED_T10_PROSE = [
+    "The 13- and 20-cell levels are re-made on the tutorial's balanced "
+    "stabiliser with the coupling's residual over its whole iterate "
+    "(1.49 and 1.50 iterations a step; section \"The coupling's residual "
+    "over its whole iterate\"); the 30-cell level and the figures of the "
+    "next two paragraphs for it were made before (the T-10's earlier "
+    "stabiliser: 6.072 and 6.474 m/s, C_D0 0.832 and 0.732 at 13 and 20 "
+    "cells, 2.9 and 3.5 iterations a step), so the GCI below mixes the "
+    "two; C_D0 moved by 0.0 % and +1.5 % at 13 and 20 cells.", "",
     "The source, 13 cells across D0 with the 0.446 m cloth (1072 "
     "triangles; the tutorial's 1.03 m edge), descends at 6.24 ± 0.19 "
     "m/s over 50-80 s (C_D0 0.789, Dp/D0 0.76), against 6.67 m/s (C_D0 "
