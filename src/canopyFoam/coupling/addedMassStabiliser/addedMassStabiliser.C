@@ -26,7 +26,7 @@ Foam::addedMassStabiliser::addedMassStabiliser
 :
     triangles_(),
     mass_(),
-    ownMass_(),
+    share_(),
     dt_(0),
     direction_(),
     stepStartVelocity_(),
@@ -141,7 +141,7 @@ Foam::addedMassStabiliser::addedMassStabiliser
             mass_[node] += triangleMass_[t]/3;
         }
     }
-    ownMass_ = structure.masses();
+    share_ = mass_/max(structure.masses() + mass_, VSMALL);
     direction_.setSize(structure.nNodes(), Zero);
     balanceAcceleration_.setSize(structure.nNodes(), Zero);
 }
@@ -206,13 +206,6 @@ void Foam::addedMassStabiliser::beginStep(canopyStructure& structure)
 }
 
 
-Foam::tmp<Foam::vectorField>
-Foam::addedMassStabiliser::balancingForces() const
-{
-    return forcesOf(balanceAcceleration_);
-}
-
-
 Foam::tmp<Foam::scalarField>
 Foam::addedMassStabiliser::balanceChange(const vectorField& held) const
 {
@@ -230,7 +223,7 @@ Foam::addedMassStabiliser::balanceChange(const vectorField& held) const
     {
         nodal = (direction_ & nodal)*direction_;
     }
-    nodal *= mass_/max(ownMass_ + mass_, VSMALL);
+    nodal *= share_;
 
     // Per triangle: the mean over its nodes, over the step
     forAll(triangles_, t)
@@ -243,15 +236,15 @@ Foam::addedMassStabiliser::balanceChange(const vectorField& held) const
 
 
 Foam::tmp<Foam::vectorField>
-Foam::addedMassStabiliser::forcesOf(const vectorField& acceleration) const
+Foam::addedMassStabiliser::balancingForces() const
 {
     if (!triangleMean_)
     {
         if (isotropic_)
         {
-            return mass_*acceleration;
+            return mass_*balanceAcceleration_;
         }
-        return mass_*(direction_ & acceleration)*direction_;
+        return mass_*(direction_ & balanceAcceleration_)*direction_;
     }
 
     // Each triangle's added mass m_t times its nodes' mean acceleration,
@@ -268,9 +261,9 @@ Foam::addedMassStabiliser::forcesOf(const vectorField& acceleration) const
             const vector f =
                 share
                *(
-                    acceleration[tri[0]]
-                  + acceleration[tri[1]]
-                  + acceleration[tri[2]]
+                    balanceAcceleration_[tri[0]]
+                  + balanceAcceleration_[tri[1]]
+                  + balanceAcceleration_[tri[2]]
                 );
             for (const label node : tri)
             {
@@ -282,7 +275,7 @@ Foam::addedMassStabiliser::forcesOf(const vectorField& acceleration) const
             scalar f = 0;
             for (const label node : tri)
             {
-                f += direction_[node] & acceleration[node];
+                f += direction_[node] & balanceAcceleration_[node];
             }
             for (const label node : tri)
             {

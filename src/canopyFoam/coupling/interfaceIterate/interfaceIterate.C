@@ -39,7 +39,6 @@ Foam::interfaceIterate::interfaceIterate
     Uref_(Uref),
     rms_(rms),
     balanceRelaxed_(false),
-    residual_(0),
     velocityResidual_(0),
     balanceResidual_(0),
     worst_(-1)
@@ -107,7 +106,6 @@ bool Foam::interfaceIterate::update
         addedMass.active()
       ? norm(addedMass.balanceChange(heldBalance_))/scale
       : 0;
-    residual_ = max(velocityResidual_, balanceResidual_);
     if (!strong)
     {
         // Explicit: one structure solve per step; the PIMPLE outer loop
@@ -122,7 +120,7 @@ bool Foam::interfaceIterate::update
     // iteration's held positions are the step's start carried with the
     // frame, so that the iterates do not depend on the frame's velocity
     // (tests/openfoam/frameGalilean)
-    const bool converged = residual_ < tolerance_;
+    const bool converged = residual() < tolerance_;
     const canopyMarkers& markers = forcing.markers();
     const vectorField& solvedPoints = markers.points();
     const vectorField& solvedNormals = markers.normals();
