@@ -206,19 +206,19 @@ void Foam::addedMassStabiliser::beginStep(canopyStructure& structure)
 }
 
 
-Foam::tmp<Foam::scalarField>
-Foam::addedMassStabiliser::balanceChange(const vectorField& held) const
+Foam::tmp<Foam::vectorField>
+Foam::addedMassStabiliser::balanceVelocities(const vectorField& abar) const
 {
-    tmp<scalarField> tchange(new scalarField(triangles_.size(), Zero));
+    tmp<vectorField> tvelocities(new vectorField(triangles_.size(), Zero));
     if (!active())
     {
-        return tchange;
+        return tvelocities;
     }
-    scalarField& change = tchange.ref();
+    vectorField& velocities = tvelocities.ref();
 
-    // Per node: the change of abar along the added mass's directions,
-    // times the share m_a/(m + m_a) of the node's mass the balance acts on
-    vectorField nodal(balanceAcceleration_ - held);
+    // Per node: abar along the added mass's directions, times the share
+    // m_a/(m + m_a) of the node's mass the balance acts on
+    vectorField nodal(abar);
     if (!isotropic_)
     {
         nodal = (direction_ & nodal)*direction_;
@@ -229,9 +229,9 @@ Foam::addedMassStabiliser::balanceChange(const vectorField& held) const
     forAll(triangles_, t)
     {
         const triFace& tri = triangles_[t];
-        change[t] = dt_*mag(nodal[tri[0]] + nodal[tri[1]] + nodal[tri[2]])/3;
+        velocities[t] = dt_*(nodal[tri[0]] + nodal[tri[1]] + nodal[tri[2]])/3;
     }
-    return tchange;
+    return tvelocities;
 }
 
 

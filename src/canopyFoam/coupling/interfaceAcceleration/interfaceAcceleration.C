@@ -60,38 +60,48 @@ Foam::scalarField pack
 }
 
 
-// The inverse of pack (the fields keep their sizes)
-void unpack
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalarField Foam::interfaceAcceleration::pack
 (
-    const Foam::scalarField& s,
-    const Foam::UList<Foam::vectorField*>& vectors,
-    const Foam::UList<Foam::scalarField*>& scalars
+    const UList<const vectorField*>& vectors,
+    const UList<const scalarField*>& scalars
 )
 {
-    Foam::label i = 0;
-    for (Foam::vectorField* f : vectors)
+    return ::pack(vectors, scalars);
+}
+
+
+void Foam::interfaceAcceleration::unpack
+(
+    const scalarField& s,
+    const UList<vectorField*>& vectors,
+    const UList<scalarField*>& scalars
+)
+{
+    label i = 0;
+    for (vectorField* f : vectors)
     {
-        for (Foam::vector& v : *f)
+        for (vector& v : *f)
         {
-            for (Foam::direction d = 0; d < 3; ++d)
+            for (direction d = 0; d < 3; ++d)
             {
                 v[d] = s[i++];
             }
         }
     }
-    for (Foam::scalarField* f : scalars)
+    for (scalarField* f : scalars)
     {
-        for (Foam::scalar& v : *f)
+        for (scalar& v : *f)
         {
             v = s[i++];
         }
     }
 }
 
-} // End anonymous namespace
-
-
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 void Foam::interfaceAcceleration::relax
 (
@@ -103,8 +113,8 @@ void Foam::interfaceAcceleration::relax
     const UList<const scalarField*>& scalarTargets
 )
 {
-    scalarField s(pack(held, heldScalars));
-    relax(x, target, s, pack(targets, scalarTargets));
+    scalarField s(::pack(held, heldScalars));
+    relax(x, target, s, ::pack(targets, scalarTargets));
     unpack(s, held, heldScalars);
 }
 

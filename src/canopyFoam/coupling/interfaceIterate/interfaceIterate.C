@@ -87,25 +87,36 @@ bool Foam::interfaceIterate::update
     ibForcing& forcing
 )
 {
-    // This iteration's change of the interface velocity the forcing
-    // imposes (the normal velocity; with tangential noSlip the whole
-    // velocity): its norm is the velocity residual; where it is largest
-    // goes to the log
-    const scalarField target(frame_.normalVelocities(structure_));
+    // The fixed point the acceleration iterates on is what the residual
+    // measures: the velocity the forcing imposes (the normal velocity;
+    // with tangential noSlip the whole velocity, the normal one then
+    // moving with it) and, with the stabiliser, its balance as the
+    // velocity change it makes over the step per triangle. So Aitken's
+    // factor and IQN-ILS's Jacobian follow the balance's convergence too,
+    // not the normal velocity's alone
+    scalarField target(frame_.normalVelocities(structure_));
     velocity_ = frame_.velocities(structure_);
     const scalar scale = max(Uref_, target.size() ? max(mag(target)) : 0);
+    const bool noSlip = forcing.noSlip();
     const scalarField change
     (
-        forcing.noSlip()
+        noSlip
       ? scalarField(mag(velocity_ - heldVelocity_))
       : scalarField(target - normalVelocity_)
     );
     velocityResidual_ = norm(change)/scale;
     worst_ = findMax(scalarField(mag(change)));
-    balanceResidual_ =
-        addedMass.active()
-      ? norm(addedMass.balanceChange(heldBalance_))/scale
-      : 0;
+    vectorField heldBalanceVelocity;
+    vectorField balanceVelocity;
+    balanceResidual_ = 0;
+    if (addedMass.active())
+    {
+        heldBalanceVelocity = addedMass.balanceVelocities(heldBalance_);
+        balanceVelocity =
+            addedMass.balanceVelocities(addedMass.balanceAcceleration());
+        balanceResidual_ =
+            norm(mag(balanceVelocity - heldBalanceVelocity))/scale;
+    }
     if (!strong)
     {
         // Explicit: one structure solve per step; the PIMPLE outer loop
@@ -122,22 +133,54 @@ bool Foam::interfaceIterate::update
     // (tests/openfoam/frameGalilean)
     const bool converged = residual() < tolerance_;
     const canopyMarkers& markers = forcing.markers();
-    const vectorField& solvedPoints = markers.points();
-    const vectorField& solvedNormals = markers.normals();
-    const scalarField& solvedAreas = markers.areas();
+    DynamicList<vectorField*> iterate;
+    DynamicList<const vectorField*> targets;
+    DynamicList<scalarField*> scalarIterate;
+    DynamicList<const scalarField*> scalarTargets;
+    DynamicList<vectorField*> held
+    ({
+        &heldBalance_, &heldPoints_, &heldNormals_
+    });
+    DynamicList<const vectorField*> solved
+    ({
+        &addedMass.balanceAcceleration(), &markers.points(),
+        &markers.normals()
+    });
+    DynamicList<scalarField*> heldScalars({&heldAreas_});
+    DynamicList<const scalarField*> solvedScalars({&markers.areas()});
+    if (noSlip)
+    {
+        iterate.append(&heldVelocity_);
+        targets.append(&velocity_);
+        heldScalars.append(&normalVelocity_);
+        solvedScalars.append(&target);
+    }
+    else
+    {
+        scalarIterate.append(&normalVelocity_);
+        scalarTargets.append(&target);
+        held.append(&heldVelocity_);
+        solved.append(&velocity_);
+    }
+    if (addedMass.active())
+    {
+        iterate.append(&heldBalanceVelocity);
+        targets.append(&balanceVelocity);
+    }
+    scalarField x
+    (
+        interfaceAcceleration::pack
+        (
+            List<const vectorField*>(iterate.begin(), iterate.end()),
+            List<const scalarField*>(scalarIterate.begin(), scalarIterate.end())
+        )
+    );
     acceleration.relax
     (
-        normalVelocity_, target,
-        List<vectorField*>
-        ({&heldBalance_, &heldVelocity_, &heldPoints_, &heldNormals_}),
-        List<const vectorField*>
-        ({
-            &addedMass.balanceAcceleration(), &velocity_,
-            &solvedPoints, &solvedNormals
-        }),
-        List<scalarField*>({&heldAreas_}),
-        List<const scalarField*>({&solvedAreas})
+        x, interfaceAcceleration::pack(targets, scalarTargets),
+        held, solved, heldScalars, solvedScalars
     );
+    interfaceAcceleration::unpack(x, iterate, scalarIterate);
     balanceRelaxed_ = !converged;
     if (!converged)
     {
