@@ -1112,25 +1112,23 @@ RUNS += [
         "box 8 D0 wide, 18 cells across D0 at the canopy, cloth without "
         "stiffness in compression, to 12 s; interval 8-12 s",
         reference="7ft", steady_start=8, steady_end=12),
-    # ... and with IQN-ILS instead of Aitken's relaxation (the T-10's
-    # settings, T10_IQN below): the cost of a step once the coupling's
-    # residual covers the stabiliser's balance
-    Run("7ft-default-iqn", SEVEN, "the main job with IQN-ILS (initial 1, "
-        "reuse 8, filter 1e-3) instead of Aitken's relaxation (box 8 D0 "
-        "wide, 18 cells across D0, to 12 s); interval 8-12 s",
-        edits=[(PROPS, "coupling/acceleration", "{ type IQN-ILS; initial "
-                "1; reuse 8; filter 1e-3; }")],
-        reference="7ft", steady_start=8, steady_end=12),
 ]
-# ... and with Aitken's relaxation, the tutorial's acceleration until
-# IQN-ILS iterated on the stabiliser's balance too
+# ... with IQN-ILS (run while Aitken's relaxation was the tutorial's, the
+# T-10's settings, T10_IQN below: the tutorial's since) and with Aitken's
+# relaxation (the tutorial's until IQN-ILS iterated on the stabiliser's
+# balance too)
 RUNS += [
-    Run("7ft-default-aitken", SEVEN, "the main job with Aitken's "
-        "relaxation (initial 1, max 1) instead of IQN-ILS (box 8 D0 wide, "
-        "18 cells across D0, to 12 s); interval 8-12 s",
-        edits=[(PROPS, "coupling/acceleration", "{ type aitken; initial 1; "
-                "max 1; }")],
-        reference="7ft", steady_start=8, steady_end=12),
+    Run("7ft-default-%s" % ident, SEVEN, "the main job with %s instead of "
+        "%s (box 8 D0 wide, 18 cells across D0, to 12 s); interval 8-12 s"
+        % (setting, instead),
+        edits=[(PROPS, "coupling/acceleration", acceleration)],
+        reference="7ft", steady_start=8, steady_end=12)
+    for ident, setting, instead, acceleration in (
+        ("iqn", "IQN-ILS (initial 1, reuse 8, filter 1e-3)",
+         "Aitken's relaxation",
+         "{ type IQN-ILS; initial 1; reuse 8; filter 1e-3; }"),
+        ("aitken", "Aitken's relaxation (initial 1, max 1)", "IQN-ILS",
+         "{ type aitken; initial 1; max 1; }"))
 ]
 # Resolution at the canopy with the tutorial as it is (the pressure load
 # held over each step): 12, 18, 27 and 40 cells across D0, from rest to
