@@ -75,6 +75,16 @@ Foam::scalarField Foam::interfaceAcceleration::pack
 }
 
 
+Foam::scalarField Foam::interfaceAcceleration::pack
+(
+    const UList<vectorField*>& vectors,
+    const UList<scalarField*>& scalars
+)
+{
+    return ::pack(vectors, scalars);
+}
+
+
 void Foam::interfaceAcceleration::unpack
 (
     const scalarField& s,
@@ -113,8 +123,8 @@ void Foam::interfaceAcceleration::relax
     const UList<const scalarField*>& scalarTargets
 )
 {
-    scalarField s(::pack(held, heldScalars));
-    relax(x, target, s, ::pack(targets, scalarTargets));
+    scalarField s(pack(held, heldScalars));
+    relax(x, target, s, pack(targets, scalarTargets));
     unpack(s, held, heldScalars);
 }
 

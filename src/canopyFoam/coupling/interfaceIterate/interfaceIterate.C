@@ -167,14 +167,7 @@ bool Foam::interfaceIterate::update
         iterate.append(&heldBalanceVelocity);
         targets.append(&balanceVelocity);
     }
-    scalarField x
-    (
-        interfaceAcceleration::pack
-        (
-            List<const vectorField*>(iterate.begin(), iterate.end()),
-            List<const scalarField*>(scalarIterate.begin(), scalarIterate.end())
-        )
-    );
+    scalarField x(interfaceAcceleration::pack(iterate, scalarIterate));
     acceleration.relax
     (
         x, interfaceAcceleration::pack(targets, scalarTargets),
