@@ -1995,6 +1995,20 @@ TILT_STREAM = {"%s-tilt%d" % (name, a): (speed, a) for a in TILT_ANGLES
                for name, speed in (("T10", TILT_T10_SPEED),
                                    ("7ft", TILT_SEVEN_SPEED))}
 TILT_STREAM["T10-tilt30-cpd20"] = (TILT_T10_SPEED, 30)
+# Every 7 ft run above but the main job's two (re-made since) loaded the
+# cloth with each marker's own IB force (coupling.load.reaction markers,
+# the default); the tutorial now takes the force in the cells shared
+# among the markers (reaction cells). This edit restores the markers'
+# reaction for them (runs on the sampled load have none)
+SEVEN_MARKER_REACTION = [(PROPS, "coupling/load/reaction", "markers")]
+SEVEN_CELL_REACTION_RUNS = {"7ft-default", "7ft-default-40s"}
+for _run in RUNS:
+    if (_run.tutorial == SEVEN
+            and _run.ident not in SEVEN_CELL_REACTION_RUNS
+            and (PROPS, "coupling/load/type", "sampled") not in _run.edits
+            and not any(e[:2] == SEVEN_MARKER_REACTION[0][:2]
+                        for e in _run.edits)):
+        _run.edits = _run.edits + SEVEN_MARKER_REACTION
 RUN_BY_ID = {r.ident: r for r in RUNS}
 
 

@@ -291,6 +291,14 @@ Foam::scalar Foam::ibForcing::forcingIncrement
 }
 
 
+Foam::tmp<Foam::vectorField> Foam::ibForcing::cellForceShares() const
+{
+    tmp<vectorField> tshares(new vectorField);
+    velocityStencil_->shareSpread(markerForce_, markerVolumes(), tshares.ref());
+    return tshares;
+}
+
+
 void Foam::ibForcing::spread(vectorField& f) const
 {
     velocityStencil_->spread(markerForce_, f);

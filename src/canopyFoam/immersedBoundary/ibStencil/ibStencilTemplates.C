@@ -122,4 +122,50 @@ void Foam::ibStencil::interpolateSpread
 }
 
 
+template<class Type>
+void Foam::ibStencil::shareSpread
+(
+    const UList<Type>& markerValues,
+    const scalarUList& shares,
+    List<Type>& result
+) const
+{
+    checkMarkerCount(markerValues.size());
+    checkMarkerCount(shares.size());
+
+    // Per stencil cell: the integrated value spread into it, and the sum of
+    // the markers' claims s_m |w_mi| on it
+    List<Type> cellValue(stencilCells_.size(), Zero);
+    scalarList claims(stencilCells_.size(), Zero);
+    for (label m = 0; m < nMarkers_; ++m)
+    {
+        for (label k = offsets_[m]; k < offsets_[m + 1]; ++k)
+        {
+            cellValue[entrySlot_[k]] += weights_[k]*markerValues[m];
+            claims[entrySlot_[k]] += shares[m]*mag(weights_[k]);
+        }
+    }
+
+    result.setSize(nMarkers_);
+    for (label m = 0; m < nMarkers_; ++m)
+    {
+        Type sum(Zero);
+        for (label k = offsets_[m]; k < offsets_[m + 1]; ++k)
+        {
+            const scalar claim = shares[m]*mag(weights_[k]);
+            if (claim > 0)
+            {
+                sum += (claim/claims[entrySlot_[k]])*cellValue[entrySlot_[k]];
+            }
+        }
+        result[m] = sum;
+    }
+
+    // Every rank calls this, with or without local stencil entries; a
+    // cell's claims are all on the rank that holds it
+    Pstream::listCombineGather(result, plusEqOp<Type>());
+    Pstream::listCombineScatter(result);
+}
+
+
 // ************************************************************************* //
