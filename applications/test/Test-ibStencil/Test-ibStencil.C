@@ -22,6 +22,10 @@ Description
       along a random normal n, for side = +1 and -1: no cell on the wrong
       side, the same exactness checks;
     - interpolateSpread(F) = interpolate(spread(F));
+    - shareSpread(F, s): the total of F kept, F_m = s_m q(X_m) shared back
+      as about s_m q(X_m) (second order, loose bound), and opposite forces
+      on coincident markers (a pattern that spreads to nothing) shared
+      back as nothing;
     - spreading of random marker forces F_m: sum_i f_i V_i = sum_m F_m and
       sum_i f_i.q_i V_i = sum_m F_m.q(X_m) (adjointness, q a smooth
       nonlinear field) to tol relative;
@@ -772,9 +776,101 @@ void checkStencil
         tol
     );
 
+    // Sharing the spread back among the markers (shareSpread, the cloth's
+    // load as the reaction of the force in the cells): the total kept, a
+    // smooth load per share kept to second order, and a pattern that
+    // spreads to nothing shares back nothing
+    vectorField shared;
+    {
+        scalarField shares(N);
+        forAll(shares, m)
+        {
+            shares[m] = 0.5 + rnd.sample01().x();
+        }
+        st.shareSpread(F, shares, shared);
+        vector sumShared(Zero);
+        forAll(shared, m)
+        {
+            sumShared += shared[m];
+        }
+        check
+        (
+            "|sum_m shared_m - sum_m F_m|/sum_m |F_m|, shareSpread",
+            mag(sumShared - sumF)/normF,
+            tol
+        );
+
+        // F_m = s_m q(X_m): each marker gets back about its own
+        vectorField Fq(N, Zero);
+        forAll(Fq, m)
+        {
+            if (valid[m])
+            {
+                Fq[m] = shares[m]*smoothQ(X[m], bb);
+            }
+        }
+        List<vector> sharedQ;
+        st.shareSpread(Fq, shares, sharedQ);
+        scalar errShareQ = 0;
+        forAll(X, m)
+        {
+            if (valid[m])
+            {
+                errShareQ = max
+                (
+                    errShareQ,
+                    mag(sharedQ[m]/shares[m] - smoothQ(X[m], bb))
+                );
+            }
+        }
+        check
+        (
+            "max |shared_m/s_m - q(X_m)|/max|q|, shareSpread of s q "
+            "(2nd order)",
+            errShareQ/qScale,
+            0.1
+        );
+
+        // Every marker twice, with opposite forces: nothing in any cell
+        pointField XX(2*N);
+        vectorField G(2*N);
+        scalarField sharesXX(2*N);
+        forAll(X, m)
+        {
+            XX[m] = X[m];
+            XX[m + N] = X[m];
+            G[m] = F[m];
+            G[m + N] = -F[m];
+            sharesXX[m] = shares[m];
+            sharesXX[m + N] = 0.5*shares[m];
+        }
+        ibStencil twice(mesh, st.kernel());
+        twice.update(XX);
+        List<vector> sharedG;
+        twice.shareSpread(G, sharesXX, sharedG);
+        scalar maxG = 0;
+        forAll(sharedG, m)
+        {
+            maxG = max(maxG, mag(sharedG[m]));
+        }
+        check
+        (
+            "max |shared_m|/max |F_m|, opposite forces on coincident "
+            "markers",
+            maxG/max(gMax(mag(F)), VSMALL),
+            tol
+        );
+    }
+
     if (osPtr)
     {
         OFstream& os = *osPtr;
+        forAll(X, m)
+        {
+            os  << kernelName << ' ' << tag << " shared " << m << ' '
+                << shared[m].x() << ' ' << shared[m].y() << ' '
+                << shared[m].z() << nl;
+        }
         forAll(X, m)
         {
             const vector& h = st.spacing()[m];

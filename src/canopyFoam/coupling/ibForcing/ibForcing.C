@@ -168,6 +168,7 @@ Foam::ibForcing::ibForcing
     plusStencil_.reset(new ibStencil(mesh, kernel_()));
     minusStencil_.reset(new ibStencil(mesh, kernel_()));
     markerForce_.setSize(markers_->size(), Zero);
+    markerForceStart_.setSize(markers_->size(), Zero);
 }
 
 
@@ -294,7 +295,11 @@ Foam::scalar Foam::ibForcing::forcingIncrement
 Foam::tmp<Foam::vectorField> Foam::ibForcing::cellForceShares() const
 {
     tmp<vectorField> tshares(new vectorField);
-    velocityStencil_->shareSpread(markerForce_, markerVolumes(), tshares.ref());
+    velocityStencil_->shareSpread
+    (
+        markerForceStart_, markerVolumes(), tshares.ref()
+    );
+    tshares.ref() += markerForce_ - markerForceStart_;
     return tshares;
 }
 
@@ -337,6 +342,7 @@ void Foam::ibForcing::readState(const dictionary& dict)
             << " since it was written?)" << exit(FatalIOError);
     }
     markerForce_ = F;
+    markerForceStart_ = F;
 }
 
 
