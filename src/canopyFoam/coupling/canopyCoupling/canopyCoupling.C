@@ -176,7 +176,10 @@ void Foam::canopyCoupling::beginTimeStep()
     structure_.checkpoint();
     parts_->frame().startAt(structure_.time());
     parts_->addedMass().beginStep(structure_);
-    parts_->forcing().beginStep();
+    if (parts_->forcing().beginStep())
+    {
+        parts_->force().spread();
+    }
     parts_->acceleration().reset();
     step_.iterations = 0;
     structureSolves_ = 0;

@@ -35,15 +35,6 @@ Foam::tmp<Foam::vectorField> Foam::clothLoad::tangentialForces
 }
 
 
-Foam::tmp<Foam::vectorField> Foam::clothLoad::markerForces
-(
-    const ibForcing& ib
-) const
-{
-    return tmp<vectorField>(ib.markerForces());
-}
-
-
 Foam::vector Foam::clothLoad::onCloth
 (
     const ibForcing& ib,
@@ -53,15 +44,17 @@ Foam::vector Foam::clothLoad::onCloth
 ) const
 {
     const canopyMarkers& mk = ib.markers();
-    const tmp<vectorField> tF(markerForces(ib));
     const scalarField dpMarker
     (
-        pressureJump(mk, tF(), ib.plusStencil(), ib.minusStencil(), p)
+        pressureJump
+        (
+            mk, ib.markerForces(), ib.plusStencil(), ib.minusStencil(), p
+        )
     );
     vector load = sum(dpMarker*mk.areas()*mk.normals());
     if (tangential())
     {
-        const vectorField t(tangentialForces(mk, tF()));
+        const vectorField t(tangentialForces(mk, ib.markerForces()));
         load += sum(t);
         tangentialNodal = mk.toNodes(t);
     }

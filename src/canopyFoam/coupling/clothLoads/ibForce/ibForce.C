@@ -27,28 +27,11 @@ Foam::clothLoads::ibForce::ibForce
 )
 :
     clothLoad(load, rho),
-    tangential_(load.flag("tangential", false)),
-    cellReaction_
-    (
-        load.choice
-        (
-            "reaction", {"markers", "cells"},
-            "IB force the load is the reaction of", "markers"
-        ) == "cells"
-    )
+    tangential_(load.flag("tangential", false))
 {}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-Foam::tmp<Foam::vectorField> Foam::clothLoads::ibForce::markerForces
-(
-    const ibForcing& ib
-) const
-{
-    return cellReaction_ ? ib.cellForceShares() : clothLoad::markerForces(ib);
-}
-
 
 Foam::tmp<Foam::scalarField> Foam::clothLoads::ibForce::pressureJump
 (
