@@ -176,10 +176,7 @@ void Foam::canopyCoupling::beginTimeStep()
     structure_.checkpoint();
     parts_->frame().startAt(structure_.time());
     parts_->addedMass().beginStep(structure_);
-    if (parts_->forcing().beginStep())
-    {
-        parts_->force().spread();
-    }
+    parts_->forcing().beginStep();
     parts_->acceleration().reset();
     step_.iterations = 0;
     structureSolves_ = 0;

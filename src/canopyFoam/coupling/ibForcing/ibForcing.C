@@ -91,7 +91,7 @@ Foam::wordList Foam::ibForcing::validKeys()
     return
     {
         "kernel", "markerSpacing", "iterations", "tangential",
-        "pressureOffset", "accumulatedForce"
+        "pressureOffset"
     };
 }
 
@@ -134,15 +134,6 @@ Foam::ibForcing::ibForcing
             "kernel", deltaKernel::dictionaryConstructorTablePtr_->sortedToc(),
             "delta kernel", "roma3"
         )
-    ),
-    shareAccumulated_
-    (
-        forcing.choice
-        (
-            "accumulatedForce", {"markers", "cells"},
-            "keeper of the accumulated force", "markers"
-        )
-     == "cells"
     ),
     uniformSpacing_(forcing.found("markerSpacing")),
     spacing_
@@ -301,28 +292,27 @@ Foam::scalar Foam::ibForcing::forcingIncrement
 }
 
 
+Foam::tmp<Foam::vectorField> Foam::ibForcing::cellForceShares() const
+{
+    tmp<vectorField> tshares(new vectorField);
+    velocityStencil_->shareSpread
+    (
+        markerForceStart_, markerVolumes(), tshares.ref()
+    );
+    tshares.ref() += markerForce_ - markerForceStart_;
+    return tshares;
+}
+
+
 void Foam::ibForcing::spread(vectorField& f) const
 {
     velocityStencil_->spread(markerForce_, f);
 }
 
 
-bool Foam::ibForcing::beginStep()
+void Foam::ibForcing::beginStep()
 {
-    bool reshared = false;
-    if (shareAccumulated_ && markerForce_.size())
-    {
-        // The air feels the markers' forces in the cells: take them from
-        // there, shared back in proportion to dV_m |w_im|. The total and
-        // a load proportional to the markers' volumes are kept; what
-        // spreads to nothing is dropped
-        vectorField shared;
-        velocityStencil_->shareSpread(markerForce_, markerVolumes(), shared);
-        markerForce_ = shared;
-        reshared = true;
-    }
     markerForceStart_ = markerForce_;
-    return reshared;
 }
 
 

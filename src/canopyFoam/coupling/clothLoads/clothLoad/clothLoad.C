@@ -35,6 +35,15 @@ Foam::tmp<Foam::vectorField> Foam::clothLoad::tangentialForces
 }
 
 
+Foam::tmp<Foam::vectorField> Foam::clothLoad::markerForces
+(
+    const ibForcing& ib
+) const
+{
+    return tmp<vectorField>(ib.markerForces());
+}
+
+
 Foam::vector Foam::clothLoad::onCloth
 (
     const ibForcing& ib,
@@ -44,17 +53,15 @@ Foam::vector Foam::clothLoad::onCloth
 ) const
 {
     const canopyMarkers& mk = ib.markers();
+    const tmp<vectorField> tF(markerForces(ib));
     const scalarField dpMarker
     (
-        pressureJump
-        (
-            mk, ib.markerForces(), ib.plusStencil(), ib.minusStencil(), p
-        )
+        pressureJump(mk, tF(), ib.plusStencil(), ib.minusStencil(), p)
     );
     vector load = sum(dpMarker*mk.areas()*mk.normals());
     if (tangential())
     {
-        const vectorField t(tangentialForces(mk, ib.markerForces()));
+        const vectorField t(tangentialForces(mk, tF()));
         load += sum(t);
         tangentialNodal = mk.toNodes(t);
     }

@@ -9,7 +9,7 @@
 
 Foam::wordList Foam::clothLoad::validKeys()
 {
-    return {"type", "tangential", "pressureHeld"};
+    return {"type", "tangential", "pressureHeld", "reaction"};
 }
 
 

@@ -27,11 +27,28 @@ Foam::clothLoads::ibForce::ibForce
 )
 :
     clothLoad(load, rho),
-    tangential_(load.flag("tangential", false))
+    tangential_(load.flag("tangential", false)),
+    cellReaction_
+    (
+        load.choice
+        (
+            "reaction", {"markers", "cells"},
+            "load reaction", "markers"
+        ) == "cells"
+    )
 {}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::tmp<Foam::vectorField> Foam::clothLoads::ibForce::markerForces
+(
+    const ibForcing& ib
+) const
+{
+    return cellReaction_ ? ib.cellForceShares() : clothLoad::markerForces(ib);
+}
+
 
 Foam::tmp<Foam::scalarField> Foam::clothLoads::ibForce::pressureJump
 (

@@ -37,6 +37,15 @@ Foam::clothLoads::sampled::sampled
             " tangential load is the rest of the markers' IB force)"
         );
     }
+    if (load.found("reaction"))
+    {
+        load.fail
+        (
+            "reaction",
+            "needs '" + load.name("type") + "' = ibForce (it says which IB"
+            " force the cloth's load is the reaction of)"
+        );
+    }
 }
 
 
