@@ -778,8 +778,9 @@ void checkStencil
 
     // Sharing the spread back among the markers (shareSpread, the cloth's
     // load as the reaction of the force in the cells): the total kept, a
-    // smooth load per share kept to second order, and a pattern that
-    // spreads to nothing shares back nothing
+    // load proportional to the shares given back exactly where no weight
+    // is negative, and a pattern that spreads to nothing shares back
+    // nothing
     vectorField shared;
     {
         scalarField shares(N);
