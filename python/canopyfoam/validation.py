@@ -1354,6 +1354,29 @@ RUNS += [seven_mapped("7ft-mapped-cpd27-co0.25", 27, FINE_CLOTH_SOURCE,
                       edits=[("system/controlDict", "maxCo", "0.25"),
                              ("system/controlDict", "maxDeltaT", "0.005")],
                       setting=", maxCo 0.25 (maxDeltaT 0.005)")]
+# The same levels on the tutorial's load, the force the markers had
+# accumulated taken from the cells (coupling.load.reaction cells): a source
+# of the 0.044 m cloth from rest at 18 cells to 12 s (the main job's
+# descent is steady from 10 s on this load: 5.43-5.47 m/s over 10-16 s in
+# 7ft-default-40s), and the levels continuing it to 5 s, read over 2-5 s
+# (the start transient of a finer mesh lasts up to 2 s)
+FINE_CLOTH_CELLS_SOURCE = "7ft-cpd18-cloth0.044-cells-12s"
+RUNS += [
+    Run(FINE_CLOTH_CELLS_SOURCE, SEVEN, "18 cells across D0, the narrow "
+        "refinement, the tutorial's cloth and load (the load from the "
+        "cells) with the fabric's edge 0.044 m (0.37 finest cells), from "
+        "rest to 12 s; interval 10-12 s",
+        ["-cellsPerDiameter", "18"],
+        [cloth_edge_edit(INFLATED_EDGE, 18), NARROW_EDIT,
+         ("system/controlDict", "endTime", "12")],
+        reference="7ft", steady_start=10, steady_end=12),
+]
+RUNS += [seven_mapped("7ft-mapped-cells-cpd%d" % n, n,
+                      FINE_CLOTH_CELLS_SOURCE, end=5, start=2.0,
+                      setting=", the load from the cells")
+         for n in (18, 27, 40)]
+SEVEN_MAPPED_CELLS_RUNS = {FINE_CLOTH_CELLS_SOURCE} | {
+    "7ft-mapped-cells-cpd%d" % n for n in (18, 27, 40)}
 # Turbulence at the converged set-up (issue 34 item 3): the WALE LES
 # model with LUST convection on the main job's set-up over 10-40 s (the
 # long window whose interval is ±1.4 % in C_D0), and on the resolution
@@ -2019,7 +2042,7 @@ TILT_STREAM["T10-tilt30-cpd20"] = (TILT_T10_SPEED, 30)
 # sampled load have none)
 SEVEN_MARKER_REACTION = [(PROPS, "coupling/load/reaction", "markers")]
 SEVEN_CELL_REACTION_RUNS = {"7ft-default", "7ft-default-40s",
-                            "7ft-default-bend0"}
+                            "7ft-default-bend0"} | SEVEN_MAPPED_CELLS_RUNS
 for _run in RUNS:
     if (_run.tutorial == SEVEN
             and _run.ident not in SEVEN_CELL_REACTION_RUNS
@@ -2233,6 +2256,14 @@ STUDIES = [
      "rest in the frame at the payload's speed), to 4 s, read over 1-4 s"
      % FINE_CLOTH_SOURCE,
      ["7ft-mapped-cpd%d" % n for n in (18, 27, 40)] + [FINE_CLOTH_SOURCE]),
+    ("resolution7ftMappedCells", "7 ft canopy on the guide wire, the "
+     "tutorial's load (taken from the cells): cells across D0 at the canopy "
+     "with the cloth held at its finest (fabric edge 0.044 m) on the narrow "
+     "refinement, each level continuing %s at 12 s (its air's fields mapped "
+     "onto the level's mesh, its canopy at rest in the frame at the "
+     "payload's speed), to 5 s, read over 2-5 s" % FINE_CLOTH_CELLS_SOURCE,
+     ["7ft-mapped-cells-cpd%d" % n for n in (18, 27, 40)]
+     + [FINE_CLOTH_CELLS_SOURCE]),
     ("resolutionT10Mapped", "T-10 at 163 kg on a guide wire, the extended "
      "skirt: cells across D0 at the canopy with the cloth held at 0.446 m "
      "(the 30-cell level's edge), each level continuing %s at 80 s (its "
