@@ -6,6 +6,7 @@
 #include "addedMassStabiliser.H"
 #include "canopyStructure.H"
 #include "canopyFoamCompat.H"
+#include "ibForcing.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -38,7 +39,9 @@ Foam::addedMassStabiliser::addedMassStabiliser
     endOfStep_(false),
     isotropic_(false),
     triangleMean_(false),
-    consistent_(false)
+    kernel_(false),
+    consistent_(false),
+    forcing_(nullptr)
 {
     addedMass.rejectUnknown(validKeys());
 
@@ -69,12 +72,15 @@ Foam::addedMassStabiliser::addedMassStabiliser
             "direction", {"normal", "all"}, "direction", "normal"
         )
      == "all";
-    triangleMean_ =
+    const word filter
+    (
         addedMass.choice
         (
-            "filter", {"none", "triangleMean"}, "filter", "none"
+            "filter", {"none", "triangleMean", "kernel"}, "filter", "none"
         )
-     == "triangleMean";
+    );
+    kernel_ = filter == "kernel";
+    triangleMean_ = filter != "none";
     consistent_ =
         addedMass.choice
         (
@@ -112,7 +118,26 @@ Foam::addedMassStabiliser::addedMassStabiliser
                 " integrator.type hht or newmark, not " + integrator
             );
         }
+        if (kernel_)
+        {
+            addedMass.fail
+            (
+                "filter",
+                "= kernel leaves the motions finer than the IB kernel"
+                " unbalanced, which distribution consistent gives added"
+                " mass: use distribution lumped, or filter triangleMean"
+            );
+        }
         triangleMean_ = true;
+    }
+    if (kernel_ && !isotropic_)
+    {
+        addedMass.fail
+        (
+            "filter",
+            "= kernel balances the whole acceleration as the IB kernel sees"
+            " it: it needs direction all, not normal"
+        );
     }
     if (endOfStep_ && integrator != "hht" && integrator != "newmark")
     {
@@ -225,11 +250,16 @@ Foam::addedMassStabiliser::balanceVelocities(const vectorField& abar) const
     }
     nodal *= share_;
 
-    // Per triangle: the mean over its nodes, over the step
+    // Per triangle: the mean over its nodes, over the step (with filter
+    // kernel: as the IB kernel sees it)
     forAll(triangles_, t)
     {
         const triFace& tri = triangles_[t];
         velocities[t] = dt_*(nodal[tri[0]] + nodal[tri[1]] + nodal[tri[2]])/3;
+    }
+    if (kernel_)
+    {
+        velocities = forcing().kernelMean(velocities);
     }
     return tvelocities;
 }
@@ -252,6 +282,32 @@ Foam::addedMassStabiliser::balancingForces() const
     // normals, d_i sum_t (m_t/9) sum_j d_j.abar_j)
     tmp<vectorField> tforces(new vectorField(mass_.size(), Zero));
     vectorField& forces = tforces.ref();
+    if (kernel_)
+    {
+        // Each triangle's added mass m_t times its nodes' mean
+        // acceleration as the IB kernel sees it, a third to each node
+        vectorField means(triangles_.size());
+        forAll(triangles_, t)
+        {
+            const triFace& tri = triangles_[t];
+            means[t] =
+            (
+                balanceAcceleration_[tri[0]]
+              + balanceAcceleration_[tri[1]]
+              + balanceAcceleration_[tri[2]]
+            )/3;
+        }
+        const vectorField seen(forcing().kernelMean(means));
+        forAll(triangles_, t)
+        {
+            const vector f = (triangleMass_[t]/3)*seen[t];
+            for (const label node : triangles_[t])
+            {
+                forces[node] += f;
+            }
+        }
+        return tforces;
+    }
     forAll(triangles_, t)
     {
         const triFace& tri = triangles_[t];
@@ -284,6 +340,18 @@ Foam::addedMassStabiliser::balancingForces() const
         }
     }
     return tforces;
+}
+
+
+const Foam::ibForcing& Foam::addedMassStabiliser::forcing() const
+{
+    if (!forcing_)
+    {
+        FatalErrorInFunction
+            << "addedMass.filter kernel before the IB forcing was given"
+            << " (filterThrough)" << exit(FatalError);
+    }
+    return *forcing_;
 }
 
 

@@ -240,6 +240,29 @@ Foam::tmp<Foam::scalarField> Foam::canopyMarkers::triangleAverage
 }
 
 
+Foam::tmp<Foam::vectorField> Foam::canopyMarkers::triangleAverage
+(
+    const vectorField& markerValues
+) const
+{
+    const label nt = triangleStart_.size() - 1;
+    tmp<vectorField> tresult(new vectorField(nt, Zero));
+    vectorField& result = tresult.ref();
+    for (label t = 0; t < nt; ++t)
+    {
+        scalar sumA = 0;
+        vector sumV(Zero);
+        for (label m = triangleStart_[t]; m < triangleStart_[t + 1]; ++m)
+        {
+            sumA += areas_[m];
+            sumV += areas_[m]*markerValues[m];
+        }
+        result[t] = sumA > VSMALL ? sumV/sumA : Zero;
+    }
+    return tresult;
+}
+
+
 Foam::tmp<Foam::scalarField> Foam::canopyMarkers::toMarkers
 (
     const scalarField& triangleValues

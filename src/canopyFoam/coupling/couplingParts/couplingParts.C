@@ -89,6 +89,7 @@ Foam::couplingParts::couplingParts
           : labelList()
         )
     );
+    addedMass_->filterThrough(forcing_());
     if (coupling.optionalDict("lineDrag"))
     {
         lineDrag_.reset

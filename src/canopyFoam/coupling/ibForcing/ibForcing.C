@@ -304,6 +304,25 @@ Foam::tmp<Foam::vectorField> Foam::ibForcing::cellForceShares() const
 }
 
 
+Foam::tmp<Foam::vectorField> Foam::ibForcing::kernelMean
+(
+    const vectorField& triangleValues
+) const
+{
+    const scalarField dV(markerVolumes());
+    vectorField shared;
+    velocityStencil_->shareSpread
+    (
+        vectorField(dV*markers_->toMarkers(triangleValues)), dV, shared
+    );
+    forAll(shared, m)
+    {
+        shared[m] = dV[m] > VSMALL ? shared[m]/dV[m] : Zero;
+    }
+    return markers_->triangleAverage(shared);
+}
+
+
 void Foam::ibForcing::spread(vectorField& f) const
 {
     velocityStencil_->spread(markerForce_, f);
