@@ -1114,6 +1114,12 @@ RUNS += [
         "box 8 D0 wide, 18 cells across D0 at the canopy, cloth without "
         "stiffness in compression, to 15 s; interval 10-15 s",
         reference="7ft", steady_start=10, steady_end=15),
+    Run("7ft-default-triangleMean", SEVEN, "the main job to 15 s with the "
+        "stabiliser's balance of each triangle's mean acceleration "
+        "(addedMass.filter triangleMean, the tutorial's until filter "
+        "kernel); interval 10-15 s",
+        edits=[(PROPS, "coupling/addedMass/filter", "triangleMean")],
+        reference="7ft", steady_start=10, steady_end=15),
     Run("7ft-default-12s", SEVEN, "the tutorial's default to 12 s (on the "
         "guide wire): box 8 D0 wide, 18 cells across D0 at the canopy, "
         "cloth without stiffness in compression; interval 8-12 s",
@@ -1158,8 +1164,17 @@ RUNS += [
         steady_end=15)
     for n in (12, 27, 40)
 ]
-SEVEN_CELLS_15S_RUNS = {"7ft-default"} | {"7ft-cpd%d-15s" % n
-                                          for n in (12, 27, 40)}
+# ... and without the hinge dashpots (bendingDamping 0), which the
+# stabiliser's balance seen through the kernel no longer needs to converge
+RUNS += [
+    Run("7ft-default-bend0-15s", SEVEN, "the main job without hinge "
+        "dashpots (bendingDamping 0; 18 cells across D0, to 15 s); "
+        "interval 10-15 s", edits=UNDAMPED, reference="7ft",
+        steady_start=10, steady_end=15),
+]
+SEVEN_CELLS_15S_RUNS = {"7ft-default", "7ft-default-triangleMean",
+                        "7ft-default-bend0-15s"} | {
+    "7ft-cpd%d-15s" % n for n in (12, 27, 40)}
 # The main job's set-up varied one entry at a time, each from rest to 12 s
 # and read over 8-12 s as the main job is: the box's width (5.6 and 11 D0
 # against its 8), the time step (the Courant number halved, and the step's
@@ -2091,6 +2106,33 @@ for _run in RUNS:
             and not any(e[:2] == SEVEN_TWELVE_SECONDS[0][:2]
                         for e in _run.edits)):
         _run.edits = _run.edits + SEVEN_TWELVE_SECONDS
+# The tutorial's stabiliser balanced each triangle's mean acceleration
+# (filter triangleMean) from commit 7c25d6e until it took that mean as the
+# IB kernel sees it (filter kernel); the 7 ft runs made before 7c25d6e had
+# no filter. These edits say which each 7 ft run had
+SEVEN_KERNEL_RUNS = (SEVEN_CELLS_15S_RUNS | SEVEN_MAPPED_CELLS_RUNS) - {
+    "7ft-default-triangleMean"}
+SEVEN_UNFILTERED_RUNS = {
+    "7ft-LES", "7ft-LUST", "7ft-alpha100", "7ft-alpha1e4", "7ft-co0.25",
+    "7ft-cpd18-relax1", "7ft-cpd18-tol1e-3-relax1-40s",
+    "7ft-cpd18-tol1e-3-relax1-splitx", "7ft-cpd18-tol5e-4-relax1",
+    "7ft-edge0.83", "7ft-edge1.88", "7ft-free", "7ft-free-cpd18",
+    "7ft-free-w11", "7ft-free-w5.6", "7ft-free40", "7ft-h0.10-fullLoad",
+    "7ft-h0.15", "7ft-h0.15-fullLoad", "7ft-h0.15-fullLoad-16s",
+    "7ft-h0.20", "7ft-h0.20-8s", "7ft-h0.20-fullLoad",
+    "7ft-h0.20-fullLoad-16s", "7ft-h0.30", "7ft-h0.30-fullLoad",
+    "7ft-narrow-balanced", "7ft-narrow-default", "7ft-pTight",
+    "7ft-relax1-40s", "7ft-relax1-splitx", "7ft-tol1e-3",
+    "7ft-tol1e-3-relax1", "7ft-tol1e-3-relax1-splitx",
+    "7ft-tol5e-4-relax1", "7ft-undamped-h0.20", "7ft-w11", "7ft-w5.6"}
+for _run in RUNS:
+    if (_run.tutorial == SEVEN and _run.ident not in SEVEN_KERNEL_RUNS
+            and not any(e[1] == "coupling/addedMass/filter"
+                        for e in _run.edits)):
+        _run.edits = _run.edits + [
+            (PROPS, "coupling/addedMass/filter",
+             "none" if _run.ident in SEVEN_UNFILTERED_RUNS
+             else "triangleMean")]
 RUN_BY_ID = {r.ident: r for r in RUNS}
 
 
@@ -2127,7 +2169,8 @@ def earlier_seven(run):
 
 STUDIES = [
     ("default7ft", "7 ft canopy: the main job (the tutorial's default)",
-     ["7ft-default", "7ft-default-12s", "7ft-default-follower", "7ft-stiff",
+     ["7ft-default", "7ft-default-triangleMean", "7ft-default-12s",
+      "7ft-default-follower", "7ft-stiff",
       "7ft-free", "7ft-narrow-balanced", "7ft-narrow-default",
       "7ft-h0.15-fullLoad-16s"]),
     ("domain7ft", "7 ft canopy on the guide wire: the box's width (the "
@@ -2184,6 +2227,11 @@ STUDIES = [
      "at every level): cells across D0 at the canopy (box 8 D0 wide; from "
      "rest to 15 s, read over 10-15 s)",
      ["7ft-cpd12-15s", "7ft-default", "7ft-cpd27-15s", "7ft-cpd40-15s"]),
+    ("kernelFilter7ft", "7 ft canopy: the stabiliser's balance seen "
+     "through the IB kernel (the tutorial, addedMass.filter kernel) against "
+     "each triangle's mean (triangleMean), and without the hinge dashpots "
+     "(the main job: 18 cells across D0, to 15 s, read over 10-15 s)",
+     ["7ft-default", "7ft-default-triangleMean", "7ft-default-bend0-15s"]),
     ("balance7ft", "7 ft canopy: the stabiliser's balance in the "
      "structure's sub-steps, the last sub-step's end acceleration "
      "(endOfStep) against the step's mean acceleration (stepMean) (the "
