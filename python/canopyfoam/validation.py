@@ -4944,7 +4944,7 @@ STUDY_CAVEATS = {
     "resolution7ftCells": "its levels run from rest to 15 s and are read "
     "over 10-15 s, a window of about 7 breathing periods after the "
     "descent's dip at 8-10 s (on the main job's set-up the 2 s means "
-    "stay within 5.36-5.53 m/s over 10-40 s, 7ft-default-40s); the "
+    "stay within 5.36-5.54 m/s over 10-40 s, 7ft-default-40s); the "
     "40-cell level (about 1.7 million cells, several hours on 2 cores) "
     "is not yet run, so the finest level is 27 cells across D0",
     "resolution7ftMapped": "its levels continue one 18-cell run's state at "
