@@ -343,6 +343,20 @@ Foam::addedMassStabiliser::balancingForces() const
 }
 
 
+void Foam::addedMassStabiliser::filterThrough(const ibForcing& forcing)
+{
+    const label sampled = forcing.markers().levels().size();
+    if (active() && sampled != triangles_.size())
+    {
+        FatalErrorInFunction
+            << "The IB forcing's markers sample " << sampled
+            << " triangles, the stabiliser acts on " << triangles_.size()
+            << exit(FatalError);
+    }
+    forcing_ = &forcing;
+}
+
+
 const Foam::ibForcing& Foam::addedMassStabiliser::forcing() const
 {
     if (!forcing_)
