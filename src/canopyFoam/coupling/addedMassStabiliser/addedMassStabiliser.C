@@ -109,15 +109,6 @@ Foam::addedMassStabiliser::addedMassStabiliser
                 " is the triangles' mean acceleration (filter triangleMean)"
             );
         }
-        if (integrator != "hht" && integrator != "newmark")
-        {
-            addedMass.fail
-            (
-                "distribution",
-                "= consistent couples the nodes and needs the structure's"
-                " integrator.type hht or newmark, not " + integrator
-            );
-        }
         if (kernel_)
         {
             addedMass.fail
@@ -126,6 +117,15 @@ Foam::addedMassStabiliser::addedMassStabiliser
                 "= kernel leaves the motions finer than the IB kernel"
                 " unbalanced, which distribution consistent gives added"
                 " mass: use distribution lumped, or filter triangleMean"
+            );
+        }
+        if (integrator != "hht" && integrator != "newmark")
+        {
+            addedMass.fail
+            (
+                "distribution",
+                "= consistent couples the nodes and needs the structure's"
+                " integrator.type hht or newmark, not " + integrator
             );
         }
         triangleMean_ = true;
