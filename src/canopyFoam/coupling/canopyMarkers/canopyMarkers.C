@@ -218,40 +218,19 @@ void Foam::canopyMarkers::moveTo
 }
 
 
-Foam::tmp<Foam::scalarField> Foam::canopyMarkers::triangleAverage
+template<class Type>
+Foam::tmp<Foam::Field<Type>> Foam::canopyMarkers::areaMean
 (
-    const scalarField& markerValues
+    const Field<Type>& markerValues
 ) const
 {
     const label nt = triangleStart_.size() - 1;
-    tmp<scalarField> tresult(new scalarField(nt, Zero));
-    scalarField& result = tresult.ref();
-    for (label t = 0; t < nt; ++t)
-    {
-        scalar sumA = 0, sumV = 0;
-        for (label m = triangleStart_[t]; m < triangleStart_[t + 1]; ++m)
-        {
-            sumA += areas_[m];
-            sumV += areas_[m]*markerValues[m];
-        }
-        result[t] = sumA > VSMALL ? sumV/sumA : 0;
-    }
-    return tresult;
-}
-
-
-Foam::tmp<Foam::vectorField> Foam::canopyMarkers::triangleAverage
-(
-    const vectorField& markerValues
-) const
-{
-    const label nt = triangleStart_.size() - 1;
-    tmp<vectorField> tresult(new vectorField(nt, Zero));
-    vectorField& result = tresult.ref();
+    tmp<Field<Type>> tresult(new Field<Type>(nt, Zero));
+    Field<Type>& result = tresult.ref();
     for (label t = 0; t < nt; ++t)
     {
         scalar sumA = 0;
-        vector sumV(Zero);
+        Type sumV(Zero);
         for (label m = triangleStart_[t]; m < triangleStart_[t + 1]; ++m)
         {
             sumA += areas_[m];
@@ -260,6 +239,24 @@ Foam::tmp<Foam::vectorField> Foam::canopyMarkers::triangleAverage
         result[t] = sumA > VSMALL ? sumV/sumA : Zero;
     }
     return tresult;
+}
+
+
+Foam::tmp<Foam::scalarField> Foam::canopyMarkers::triangleAverage
+(
+    const scalarField& markerValues
+) const
+{
+    return areaMean(markerValues);
+}
+
+
+Foam::tmp<Foam::vectorField> Foam::canopyMarkers::triangleAverage
+(
+    const vectorField& markerValues
+) const
+{
+    return areaMean(markerValues);
 }
 
 
