@@ -6337,7 +6337,9 @@ def resolution_cells_lines():
     GCI, the main job's error against it and the handbook's range, from the
     committed records."""
     study = "resolution7ftCells"
-    ids = dict((st[0], st[2]) for st in STUDIES)[study]
+    ids = dict((st[0], st[2]) for st in STUDIES).get(study)
+    if ids is None or any(i not in RUN_BY_ID for i in ids):
+        return []
     md = ["## The 7 ft canopy's resolution on the tutorial as it is", "",
           "Study %s: the tutorial as it is (the load from the cells, the "
           "stabiliser's balance seen through the kernel, the cloth's edge "
