@@ -5030,10 +5030,12 @@ MAPPED_7FT_PROSE = [
     "drop test's 4.27 m/s (C_D0 about 1.35) stays beyond it. The tutorial "
     "(18 cells, the 0.148 m edge) gives 0.685 over 8-12 s and 0.674 over "
     "10-40 s, 14-15 % below this level: its error is the cloth's "
-    "resolution more than the air's. This is also the study each 7 ft "
-    "run's summary now compares with (report.py, convergedStudy), with "
-    "its caveat: the window is 2 s right after a 10 s state, and from "
-    "rest the descent drifts for tens of seconds.", "",
+    "resolution more than the air's. Each 7 ft run's summary compared "
+    "with this study (report.py, convergedStudy) until the study on the "
+    "tutorial as it is (resolution7ftCells, section \"The 7 ft canopy's "
+    "resolution on the tutorial as it is\") took its place; its caveat: "
+    "the window is 2 s right after a 10 s state, and from rest the "
+    "descent drifts for tens of seconds.", "",
     "Cost: 40 cells across D0 on the narrow refinement is 855 876 cells; "
     "4 s took 42 min on 2 ranks at 1.01 coupling iterations a step (1.13 "
     "at 27 cells, 1.41 at 18), against about 10 h from rest on the "
@@ -6377,7 +6379,8 @@ def resolution_cells_lines():
     job_cd = job["analysis"]["dragCoefficient"]["weightBalance"]
     md += ["The converged C_D0 is the finest level's, %.3f ± %.1f %% "
            "(Roache's GCI, %s; extrapolated %.3f); the descent %.3f m/s ± "
-           "%.1f %%, Dp/D0 %.3f ± %.1f %%. The main job's %.3f is %+.1f %% "
+           "%.1f %% (%s), Dp/D0 %.3f ± %.1f %% (%s). The main job's %.3f is "
+           "%+.1f %% "
            "from it (within 5 %%: %s). Knacke's flat circular canopies "
            "(Parachute Recovery Systems Design Manual, NWC TP 6575, Table 5-1) "
            "have "
@@ -6388,7 +6391,9 @@ def resolution_cells_lines():
            % (cd["finest"], 100 * cd["gci"], cd["kind"],
               cd["extrapolated"], c["descent speed [m/s]"]["finest"],
               100 * c["descent speed [m/s]"]["gci"],
-              c["Dp/D0"]["finest"], 100 * c["Dp/D0"]["gci"], job_cd,
+              c["descent speed [m/s]"]["kind"],
+              c["Dp/D0"]["finest"], 100 * c["Dp/D0"]["gci"],
+              c["Dp/D0"]["kind"], job_cd,
               100 * (job_cd / cd["finest"] - 1),
               "yes" if abs(job_cd / cd["finest"] - 1) <= 0.05 else "no",
               100 * (cd["finest"] / 0.775 - 1), c["Dp/D0"]["finest"]), ""]
@@ -7086,8 +7091,8 @@ def write_report():
                    "7-8 s, 6.06 at 11-12 s), which a 7 s window does not "
                    "average out; longer runs, not finer ones, are what "
                    "narrows it. The 7 ft runs' converged value comes "
-                   "from study resolution7ftMapped (the finest cloth, "
-                   "to 40 cells; report.py, `convergedStudy`). The "
+                   "from study resolution7ftCells (the tutorial as it "
+                   "is; report.py, `convergedStudy`). The "
                    "main job (the 18-cell level, the same run) has C_D0 "
                    "0.685 over 8-12 s, 4.0 % below the 27-cell level's "
                    "0.714 and inside its GCI. Before Aitken's relaxation "
