@@ -2,6 +2,7 @@
 
 Usage: python3 figures.py mainjob <case dir> <wall seconds>
        python3 figures.py levels [study]
+       python3 figures.py study      (prints the default study's name)
 Prints BENCH lines (name value unit) and '# ' comment lines.
 
 mainjob: C_D0 of the case over the main job's own interval (run
@@ -12,8 +13,9 @@ finest run and GCI, bin/canopy-validate converged <study>, from the
 committed records); then both over that interval, when the finest run
 is in build/validation and its series covers it.
 
-levels: for each run of a resolution study (default resolution7ftHeld;
-resolution7ftMapped: the levels that continue a coarser run) found in
+levels: for each run of a resolution study (default the study the 7 ft
+reference's summaries compare with, report.py's convergedStudy; e.g.
+resolution7ftMappedCells: the levels that continue a coarser run) found in
 build/validation (the study's own runs, 2 ranks), over the interval of
 the study's first run: cells, wall seconds per time step (ClockTime
 increments of the solver log) and coupling iterations per step
@@ -36,7 +38,7 @@ sys.path.insert(0, os.path.join(TOP, "python"))
 from canopyfoam import report as rep          # noqa: E402
 from canopyfoam import validation as val      # noqa: E402
 
-STUDY = "resolution7ftHeld"
+STUDY = rep.REFERENCES["7ft"]["convergedStudy"]
 
 
 def interval(study=STUDY):
@@ -147,6 +149,8 @@ def levels(study=STUDY):
 if __name__ == "__main__":
     if len(sys.argv) == 4 and sys.argv[1] == "mainjob":
         main_job(sys.argv[2], float(sys.argv[3]))
+    elif len(sys.argv) == 2 and sys.argv[1] == "study":
+        print(STUDY)
     elif len(sys.argv) in (2, 3) and sys.argv[1] == "levels":
         levels(*sys.argv[2:])
     else:
