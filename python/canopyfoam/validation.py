@@ -1172,9 +1172,20 @@ RUNS += [
         "interval 10-15 s", edits=UNDAMPED, reference="7ft",
         steady_start=10, steady_end=15),
 ]
+# ... and its resolution (12 and 27 cells across D0 besides the main
+# job's 18; the cloth's edge 1.25 finest cells at every level)
+RUNS += [
+    Run("7ft-cpd%d-bend0-15s" % n, SEVEN, "box 8 D0 wide, %d cells across "
+        "D0, the tutorial's cloth and load without hinge dashpots "
+        "(bendingDamping 0), to 15 s; interval 10-15 s" % n,
+        ["-cellsPerDiameter", "%d" % n], edits=UNDAMPED, reference="7ft",
+        steady_start=10, steady_end=15)
+    for n in (12, 27)
+]
 SEVEN_CELLS_15S_RUNS = {"7ft-default", "7ft-default-triangleMean",
                         "7ft-default-bend0-15s"} | {
-    "7ft-cpd%d-15s" % n for n in (12, 27, 40)}
+    "7ft-cpd%d-15s" % n for n in (12, 27, 40)} | {
+    "7ft-cpd%d-bend0-15s" % n for n in (12, 27)}
 # The main job's set-up varied one entry at a time, each from rest to 12 s
 # and read over 8-12 s as the main job is: the box's width (5.6 and 11 D0
 # against its 8), the time step (the Courant number halved, and the step's
@@ -2268,6 +2279,13 @@ STUDIES = [
      "compression: the hinge dashpots' rate (12 cells across D0, read over "
      "30-45 s)",
      ["7ft-cpd12-45s", "7ft-bend1000-45s", "7ft-undamped-45s"]),
+    ("resolution7ftUndamped", "7 ft canopy on the guide wire, the "
+     "tutorial without hinge dashpots (bendingDamping 0; the load from the "
+     "cells, the cloth's edge 1.25 finest cells at every level): cells "
+     "across D0 at the canopy (box 8 D0 wide; from rest to 15 s, read over "
+     "10-15 s)",
+     ["7ft-cpd12-bend0-15s", "7ft-default-bend0-15s",
+      "7ft-cpd27-bend0-15s"]),
     ("resolution7ftStiff", "7 ft canopy on the guide wire: cells across D0 "
      "at the canopy, the seed's cloth as stiff in compression as in tension "
      "(box 8 D0 wide; to 8 s, read over 5-8 s)",
@@ -5065,6 +5083,8 @@ MAPPED_7FT_PROSE = [
 # What the T-10's mapped levels show (study resolutionT10Mapped)
 T10_KERNEL_PROSE = []
 
+MAPPED_CELLS_7FT_PROSE = []
+
 MAPPED_T10_PROSE = [
     "All three levels run the tutorial's stabiliser (each triangle's mean "
     "acceleration, balanced from zero each step) with the coupling's "
@@ -6436,6 +6456,74 @@ def resolution_cells_lines():
     return md
 
 
+# The 7 ft runs on the tutorial's coupling (the load from the cells, the
+# stabiliser's balance seen through the kernel) whose breathing the
+# section below sets against the cloth's edge and the hinge dashpots
+BREATHING_CLOTH_RUNS = ("7ft-cpd12-15s", "7ft-default", "7ft-cpd27-15s",
+                        "7ft-cpd12-bend0-15s", "7ft-default-bend0-15s",
+                        "7ft-cpd27-bend0-15s", "7ft-mapped-cells-cpd18",
+                        "7ft-mapped-cells-cpd27", "7ft-mapped-cells-cpd40")
+
+
+def hinge_dashpot_rate(run):
+    """The hinge dashpots' rate [1/s] of a 7 ft run: its
+    fabric/bendingDamping edit, else the tutorial's entry."""
+    edited = [e[2] for e in run.edits if e[1] == "fabric/bendingDamping"]
+    if edited:
+        return float(edited[-1])
+    with open(os.path.join(TOP, "tutorials", run.tutorial, PROPS)) as f:
+        m = re.search(r"^\s*bendingDamping\s+([0-9.eE+-]+)\s*;", f.read(),
+                      re.M)
+    return float(m.group(1))
+
+
+def breathing_cloth_lines():
+    """The 7 ft canopy's breathing against the cloth's edge and the hinge
+    dashpots (BREATHING_CLOTH_RUNS), from the committed records, as a
+    markdown section."""
+    rows = []
+    for ident in BREATHING_CLOTH_RUNS:
+        run = RUN_BY_ID.get(ident)
+        rec = run and archive.load(ARCHIVE_DIR, run)[0]
+        if not rec or not rec.get("complete") or not rec.get("analysis"):
+            continue
+        a = rec["analysis"]
+        d0 = a["parameters"]["nominalDiameter"]["value"]
+        cpd = cells_per_diameter(run)
+        b = a.get("breathingBand") or {}
+        breathing = ("%.2f | %.1f | %.2f | %.1f" % (
+            b["frequency"], 100 * b["amplitude"], b["strouhal"],
+            b["periods"]) if b.get("resolved") else "none resolved | | |")
+        rows.append("| %s | %g | %.3f (%.2f) | %g | %g-%g s | %s | %.3f | "
+                    "%.3f |" % (ident, cpd, fabric_edge_cells(run) * d0 / cpd,
+                                fabric_edge_cells(run),
+                                hinge_dashpot_rate(run), run.steady_start,
+                                run.steady_end, breathing,
+                                a["dragCoefficient"]["weightBalance"],
+                                a["projectedDiameter"]["mean"] / d0))
+    if not rows:
+        return []
+    return [
+        "## The 7 ft canopy's breathing against the cloth's edge and the "
+        "hinge dashpots", "",
+        "The runs on the tutorial's coupling (the load from the cells, the "
+        "stabiliser's balance seen through the kernel): the largest peak of "
+        "the projected diameter's spectrum at or above St = f Dp / V = 0.1 "
+        "over each run's interval (the amplitude is the peak's, in the "
+        "diameter), against the air's resolution, the cloth's edge and the "
+        "hinge dashpots' rate (fabric.bendingDamping). The mapped runs "
+        "continue 7ft-cpd18-cloth0.044-10s (study resolution7ftMappedCells) "
+        "and are read over 2-5 s after the mapping.", "",
+        "| run | cells across D0 | fabric edge [m] (finest cells) | hinge "
+        "dashpots [1/s] | interval | breathing [Hz] | amplitude [cm] | St | "
+        "periods | C_D0 | Dp/D0 |",
+        "|---|---|---|---|---|---|---|---|---|---|---|"] + rows + [""] + \
+        BREATHING_CLOTH_PROSE
+
+
+BREATHING_CLOTH_PROSE = []
+
+
 PRESSURE_LOAD_NOTES = ["## The pressure load within a step", ""]
 PRESSURE_LOAD_NOTES += [
     "The main job in a box 11 D0 wide (`7ft-default-follower-w11`), with "
@@ -7091,7 +7179,7 @@ def write_report():
         if name in ("resolution7ft", "resolution7ftStiff", "resolutionT10",
                     "resolution7ftLong", "resolution7ftSteady",
                     "resolution7ftHeld", "resolutionT10Skirt",
-                    "resolution7ftCells"):
+                    "resolution7ftCells", "resolution7ftUndamped"):
             md += gci_lines(results)
         if name == "resolution7ftSteady":
             md += two_level_lines(results[:2], "the resolution in steady "
@@ -7310,6 +7398,12 @@ def write_report():
             md += air_levels_lines(over_window(
                 levels, *CONVERGED_WINDOWS["resolution7ftMapped"]))
             md += MAPPED_7FT_PROSE
+        if name == "resolution7ftMappedCells":
+            levels = study_levels(results)
+            md += air_levels_lines(levels)
+            md += start_transient_lines(
+                levels, 0.25, "Each level's descent from the mapped start:")
+            md += MAPPED_CELLS_7FT_PROSE
         if name in ("resolutionT10Mapped", "resolutionT10Kernel"):
             levels = study_levels(results)
             md += air_levels_lines(levels)
@@ -8139,6 +8233,7 @@ def write_report():
     md += WRINKLING_NOTES
     md += MAIN_JOB_NOTES
     md += resolution_cells_lines()
+    md += breathing_cloth_lines()
     md += PRESSURE_LOAD_NOTES
     md += FOAMRUN_NOTES
     structure_lines = structure_studies()
