@@ -6521,7 +6521,39 @@ def breathing_cloth_lines():
         BREATHING_CLOTH_PROSE
 
 
-BREATHING_CLOTH_PROSE = []
+BREATHING_CLOTH_PROSE = [
+    "With the hinge dashpots (the tutorial's 10 000 /s) the canopy on the "
+    "cloth of 0.222 and 0.148 m edges does not breathe: the peaks at 0.50 "
+    "and 0.46 Hz (St 0.15) are 3.4 and 1.1 cm over two periods of a 5 s "
+    "window, the descent's slow wander rather than a breathing. On the "
+    "0.099 m cloth of the 27-cell level it breathes at 1.66 Hz, and on "
+    "the 0.044 m cloth of the mapped levels at 1.25-1.33 Hz with the same "
+    "dashpots. Without them it breathes on the coarse cloth too: 1.25 and "
+    "1.39 Hz with 7.1 and 8.1 cm at 12 and 18 cells across D0 (St 0.39 and "
+    "0.44, 6-7 periods), and the two levels agree closely in the rest: "
+    "C_D0 0.873 and 0.878 (+0.6 %), Dp/D0 0.806 and 0.807, where the "
+    "damped levels give C_D0 0.822, 0.845 and 0.826 at 12, 18 and 27 "
+    "cells.", "",
+    "Why the dashpots' effect depends on the cloth: a hinge dashpot of "
+    "rate R damps a smooth bending of wavenumber k on edges h at about "
+    "R (k h)^4 (libcanopy's bending.c; tests/canopy/"
+    "test_bending_damping_scale.c measures it), so the same physical "
+    "shape change is damped 5 times less on the 0.099 m cloth than on the "
+    "0.148 m one and about 130 times less on the 0.044 m one. The "
+    "dashpots are a regularisation of the structure's discretisation, "
+    "not a material property: their effect vanishes as the cloth is "
+    "refined, so the converged canopy is the undamped one, and at the "
+    "main job's cloth they freeze the breathing that the finer cloths "
+    "show. Nylon's own damping (the section \"7 ft canopy: nylon's "
+    "material damping as Kelvin-Voigt dashpots\", loss factors 0.01-0.1) "
+    "is a separate, physical term.", "",
+    "The drop test's canopy breathes at about 2 Hz (St ≈ 0.75 at 4.27 "
+    "m/s and about 1.6 m across; Kim 2012, sec. 5.7); the model's "
+    "breathing, where it is resolved, lies at 1.25-1.66 Hz (St 0.39-0.51). "
+    "Whether the tutorial drops the dashpots waits for the 27-cell level "
+    "without them (7ft-cpd27-bend0-15s, study resolution7ftUndamped): "
+    "without them the coupling takes 2.2-2.9 iterations a step against "
+    "1.3-1.4, and the main job at 18 cells 15.7 min against 8.6.", ""]
 
 
 PRESSURE_LOAD_NOTES = ["## The pressure load within a step", ""]
