@@ -5084,7 +5084,8 @@ MAPPED_7FT_PROSE = [
 T10_KERNEL_PROSE = [
     "Against the same levels on the load from the cells with the "
     "stabiliser's balance of each triangle's plain mean (T10-mapped-cpd13-"
-    "cells and T10-mapped-cpd20-cells, study cellReactionT10), the kernel's "
+    "cells and T10-mapped-cpd20-cells, study cellReactionT10, made on "
+    "the code of 579aea4 and bff5525), the kernel's "
     "balance gives the same descent (6.144 against 6.142 m/s at 13 cells, "
     "6.401 against 6.404 at 20; C_D0 0.8125 against 0.8130 and 0.7484 "
     "against 0.7478) in fewer coupling iterations over the whole run "
