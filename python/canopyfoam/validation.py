@@ -6456,8 +6456,13 @@ def resolution_cells_lines():
            "have "
            "C_D0 0.75-0.80 and Dp/D0 0.67-0.70: the converged C_D0 is "
            "%+.0f %% from the range's middle, while the canopy is more "
-           "open (%.2f D0). The seed's drop test, 4.27 m/s, implies C_D0 "
-           "≈ 1.35 (tutorials/parachutes/flatCircular7ft/README.md)."
+           "open (%.2f D0). Small flat circular models held in an open "
+           "wind tunnel give C_D ≈ 0.85 above 6 m/s, with longer lines "
+           "raising it (Vu, Le and Tran, JST: Smart Systems and Devices "
+           "31(2), 2021, 67-74; the value as its abstract states it, the "
+           "reference area not given there). The seed's drop test, 4.27 "
+           "m/s, implies C_D0 ≈ 1.35 (tutorials/parachutes/flatCircular7ft/"
+           "README.md)."
            % (cd["finest"], 100 * cd["gci"], cd["kind"],
               cd["extrapolated"], c["descent speed [m/s]"]["finest"],
               100 * c["descent speed [m/s]"]["gci"],
