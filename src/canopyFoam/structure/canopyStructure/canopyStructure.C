@@ -129,7 +129,8 @@ Foam::canopyStructure::canopyStructure
     builtCanopyArea_(0),
     initialVelocity_(Zero),
     nodalForcesChanged_(false),
-    motion_(nullptr)
+    motion_(nullptr),
+    bendingDampingUntil_(VGREAT)
 {
     {
         // A number beyond the double range (1e999) overflows in
@@ -200,7 +201,8 @@ Foam::canopyStructure::canopyStructure
     builtCanopyArea_(0),
     initialVelocity_(Zero),
     nodalForcesChanged_(false),
-    motion_(nullptr)
+    motion_(nullptr),
+    bendingDampingUntil_(VGREAT)
 {
     build(defaultGravity);
 }
@@ -634,6 +636,18 @@ void Foam::canopyStructure::beginStep(const scalar dt)
     if (motion_)
     {
         motion_->beginStep(model_.get(), dt);
+    }
+    if (time() + 0.5*dt >= bendingDampingUntil_)
+    {
+        check
+        (
+            canopy_model_set_bending_damping(model_.get(), 0),
+            FUNCTION_NAME, "canopy_model_set_bending_damping"
+        );
+        Info<< "canopyStructure: the hinge dashpots are off from t = "
+            << Foam::name(time()) << " (fabric.bendingDampingUntil "
+            << Foam::name(bendingDampingUntil_) << ")" << endl;
+        bendingDampingUntil_ = VGREAT;
     }
 }
 

@@ -140,6 +140,7 @@ struct structureSpec
     scalar alpha = 0;
     scalar beta = 0;
     scalar bendingDamping = 0;
+    scalar bendingDampingUntil = VGREAT;
     word bendingDampingScheme = "explicit";
     word bendingDampingFilter = "none";
     scalar compressionRatio = 1;
@@ -419,6 +420,22 @@ void readFabric(const scopedEntryReader& top, structureSpec& s)
     (
         "bendingDamping", "decay rate of each hinge's bending [1/s]", 0
     );
+    if (fr.found("bendingDampingUntil"))
+    {
+        s.bendingDampingUntil = fr.nonNegative
+        (
+            "bendingDampingUntil",
+            "time from which the hinge dashpots are off [s]", 0
+        );
+        if (s.bendingDamping == 0)
+        {
+            fr.fail
+            (
+                "bendingDampingUntil",
+                "needs hinge dashpots to switch off (bendingDamping > 0)"
+            );
+        }
+    }
     s.bendingDampingScheme = fr.choice
     (
         "bendingDampingScheme", wordList{"explicit", "implicit"},
@@ -463,7 +480,7 @@ void readFabric(const scopedEntryReader& top, structureSpec& s)
         wordList
         {
             "arealDensity", "stiffness", "tensileStiffness", "damping",
-            "bendingDamping", "bendingDampingScheme",
+            "bendingDamping", "bendingDampingUntil", "bendingDampingScheme",
             "bendingDampingFilter", "compressionRatio", "law", "porosity"
         }
     );
@@ -891,6 +908,14 @@ void Foam::canopyStructure::build(const vector& defaultGravity)
         FUNCTION_NAME, "canopy_model_set_implicit_controls"
     );
     check(canopy_model_set_speed_limit(m, s.speedLimit), FUNCTION_NAME, "canopy_model_set_speed_limit");
+
+    bendingDampingUntil_ = s.bendingDampingUntil;
+    if (bendingDampingUntil_ < VGREAT)
+    {
+        Info<< "canopyStructure: the hinge dashpots ("
+            << Foam::name(s.bendingDamping) << " /s) are off from t = "
+            << Foam::name(bendingDampingUntil_) << endl;
+    }
 
     if (s.motionDict)
     {
