@@ -1157,13 +1157,18 @@ RUNS += [
 # cells, the cloth's edge 1.25 finest cells at every level): 12, 18 (the
 # main job), 27 and 40 cells across D0, from rest to 15 s, read over 10-15
 # s as the main job is
-RUNS += [
-    Run("7ft-cpd%d-15s" % n, SEVEN, "box 8 D0 wide, %d cells across D0, "
-        "the tutorial's cloth and load, to 15 s; interval 10-15 s" % n,
-        ["-cellsPerDiameter", "%d" % n], reference="7ft", steady_start=10,
-        steady_end=15)
-    for n in (12, 27, 40)
-]
+def seven_level_15s(ident, cells, setting="", edits=()):
+    """A level of the 7 ft tutorial from rest to 15 s, read over 10-15 s
+    as the main job is: `cells` across D0, its `setting` (for the label)
+    made by `edits`."""
+    return Run(ident, SEVEN, "box 8 D0 wide, %d cells across D0, the "
+               "tutorial's cloth and load%s, to 15 s; interval 10-15 s"
+               % (cells, setting), ["-cellsPerDiameter", "%d" % cells],
+               edits=list(edits), reference="7ft", steady_start=10,
+               steady_end=15)
+
+
+RUNS += [seven_level_15s("7ft-cpd%d-15s" % n, n) for n in (12, 27, 40)]
 # ... and without the hinge dashpots (bendingDamping 0), which the
 # stabiliser's balance seen through the kernel no longer needs to converge
 RUNS += [
@@ -1174,14 +1179,9 @@ RUNS += [
 ]
 # ... and its resolution (12 and 27 cells across D0 besides the main
 # job's 18; the cloth's edge 1.25 finest cells at every level)
-RUNS += [
-    Run("7ft-cpd%d-bend0-15s" % n, SEVEN, "box 8 D0 wide, %d cells across "
-        "D0, the tutorial's cloth and load without hinge dashpots "
-        "(bendingDamping 0), to 15 s; interval 10-15 s" % n,
-        ["-cellsPerDiameter", "%d" % n], edits=UNDAMPED, reference="7ft",
-        steady_start=10, steady_end=15)
-    for n in (12, 27)
-]
+RUNS += [seven_level_15s("7ft-cpd%d-bend0-15s" % n, n, " without hinge "
+                         "dashpots (bendingDamping 0)", UNDAMPED)
+         for n in (12, 27)]
 SEVEN_CELLS_15S_RUNS = {"7ft-default", "7ft-default-triangleMean",
                         "7ft-default-bend0-15s"} | {
     "7ft-cpd%d-15s" % n for n in (12, 27, 40)} | {
@@ -1348,14 +1348,10 @@ def seven_undamped_continued(cells, source):
 # D0 by 1.5-2 s at 12, 18 and 27 cells with them), to 15 s, read over 10-15
 # s as the main job is
 UNTIL_TWO = [(PROPS, "fabric/bendingDampingUntil", "2")]
-RUNS += [
-    Run("7ft-cpd%d-until2-15s" % n, SEVEN, "box 8 D0 wide, %d cells across "
-        "D0, the tutorial's cloth and load with the hinge dashpots off from "
-        "2 s (bendingDampingUntil 2), to 15 s; interval 10-15 s" % n,
-        ["-cellsPerDiameter", "%d" % n], edits=UNTIL_TWO, reference="7ft",
-        steady_start=10, steady_end=15)
-    for n in (12, 18, 27)
-]
+RUNS += [seven_level_15s("7ft-cpd%d-until2-15s" % n, n, " with the hinge "
+                         "dashpots off from 2 s (bendingDampingUntil 2)",
+                         UNTIL_TWO)
+         for n in (12, 18, 27)]
 SEVEN_CELLS_15S_RUNS |= {"7ft-cpd%d-until2-15s" % n for n in (12, 18, 27)}
 RUNS += [seven_undamped_continued(12, "7ft-cpd12-15s"),
          seven_undamped_continued(18, "7ft-default"),
