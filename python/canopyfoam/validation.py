@@ -6627,14 +6627,18 @@ def breathing_cloth_lines():
 
 UNDAMPED_CONTINUED_PROSE = [
     "Continued without the hinge dashpots from their damped runs' "
-    "canopies at 15 s, the 12- and 27-cell levels give C_D0 0.864 and "
-    "0.870 (Dp/D0 0.829 and 0.787) in about 2 coupling iterations a step "
-    "(2.03 and 1.95; the 27-cell level 45 min for 8 s on 2 ranks), within "
-    "1 % of the 12- and 18-cell levels without them from rest (0.873 and "
-    "0.878, study resolution7ftUndamped), where the damped levels give "
-    "0.822, 0.845 and 0.826. The breathing converges in frequency, 1.33 "
-    "and 1.42 Hz (St 0.43 and 0.46), while its amplitude grows with the "
-    "resolution, 4.3 and 19.3 cm of the projected diameter. Against "
+    "canopies at 15 s, the 12-, 18- and 27-cell levels give C_D0 0.864, "
+    "0.872 and 0.870 (Dp/D0 0.829, 0.793 and 0.787) in about 2 coupling "
+    "iterations a step (2.03, 2.08 and 1.95; the 27-cell level 45 min for "
+    "8 s on 2 ranks), within 1 % of the 12- and 18-cell levels without "
+    "them from rest (0.873 and 0.878, study resolution7ftUndamped), where "
+    "the damped levels give 0.822, 0.845 and 0.826. The breathing's "
+    "frequency stays at 1.28-1.42 Hz (St 0.41-0.46), while its amplitude "
+    "grows with the resolution, 4.3, 16.5 and 19.3 cm of the projected "
+    "diameter. Roache's GCI of the 27-cell level (the table above): C_D0 "
+    "0.870 ± 1.6 %, the descent 5.47 m/s ± 0.8 %, Dp/D0 0.787 ± 4.7 %, "
+    "against 14.3, 7.0 and 10.9 % for the damped levels from rest. "
+    "Against "
     "Knacke's 0.75-0.80 for flat circular canopies the undamped canopy's "
     "C_D0 is about 9 % above the range's top.", ""]
 
