@@ -3925,6 +3925,24 @@ TABLE_HEAD = ("| run | setting | cells | simulated | terminal velocity "
               "time on ranks |\n|---|---|---|---|---|---|---|---|---|")
 
 
+def run_setting(run, dictionary, entry):
+    """A numeric entry of a run's case: its last edit of `entry` (a
+    foamDictionary path) in `dictionary`, else the tutorial's own value
+    (the first line that sets the path's last key); None if neither."""
+    edited = [e[2] for e in run.edits if e[0] == dictionary and e[1] == entry]
+    if edited:
+        return float(edited[-1])
+    key = entry.split("/")[-1]
+    try:
+        with open(os.path.join(TOP, "tutorials", run.tutorial,
+                               dictionary)) as f:
+            m = re.search(r"^\s*%s\s+([0-9.eE+-]+)\s*;" % re.escape(key),
+                          f.read(), re.M)
+    except OSError:
+        return None
+    return float(m.group(1)) if m else None
+
+
 def cells_per_diameter(run):
     """Cells across D0 in the finest level of a run on a tutorial meshed
     from system/canopyMeshDict: its -cellsPerDiameter option, else its
@@ -3934,18 +3952,7 @@ def cells_per_diameter(run):
         return None
     if "-cellsPerDiameter" in run.options:
         return float(run.options[run.options.index("-cellsPerDiameter") + 1])
-    edited = [e[2] for e in run.edits
-              if e[0] == MESH_DICT and e[1] == "cellsPerDiameter"]
-    if edited:
-        return float(edited[-1])
-    path = os.path.join(TOP, "tutorials", run.tutorial, MESH_DICT)
-    try:
-        with open(path) as f:
-            m = re.search(r"^\s*cellsPerDiameter\s+([0-9.eE+-]+)\s*;",
-                          f.read(), re.M)
-    except OSError:
-        return None
-    return float(m.group(1)) if m else None
+    return run_setting(run, MESH_DICT, "cellsPerDiameter")
 
 
 def flat_circular_handbook(total_mass, rho=1.2, g=9.81, d0=2.134):
@@ -3996,14 +4003,7 @@ def t10_handbook_cd0(mass=163.0, rho=1.2, g=9.81, d0=10.7):
 def fabric_edge_cells(run):
     """The fabric's edge in finest cells of a run (its edgeLengthPerCell
     edit, else its tutorial's canopyMeshDict entry)."""
-    edits = dict((e[1], e[2]) for e in run.edits if e[0] == MESH_DICT)
-    path = os.path.join(TOP, "tutorials", run.tutorial, MESH_DICT)
-    if "edgeLengthPerCell" in edits:
-        return float(edits["edgeLengthPerCell"])
-    with open(path) as f:
-        m = re.search(r"^\s*edgeLengthPerCell\s+([0-9.eE+-]+)\s*;",
-                      f.read(), re.M)
-    return float(m.group(1))
+    return run_setting(run, MESH_DICT, "edgeLengthPerCell")
 
 
 # The breathing peaks of three levels are one mode, and so have a GCI,
@@ -6565,18 +6565,6 @@ BREATHING_CLOTH_RUNS = ("7ft-cpd12-15s", "7ft-default", "7ft-cpd27-15s",
                         "7ft-mapped-cells-cpd27", "7ft-mapped-cells-cpd40")
 
 
-def hinge_dashpot_rate(run):
-    """The hinge dashpots' rate [1/s] of a 7 ft run: its
-    fabric/bendingDamping edit, else the tutorial's entry."""
-    edited = [e[2] for e in run.edits if e[1] == "fabric/bendingDamping"]
-    if edited:
-        return float(edited[-1])
-    with open(os.path.join(TOP, "tutorials", run.tutorial, PROPS)) as f:
-        m = re.search(r"^\s*bendingDamping\s+([0-9.eE+-]+)\s*;", f.read(),
-                      re.M)
-    return float(m.group(1))
-
-
 def breathing_cloth_lines():
     """The 7 ft canopy's breathing against the cloth's edge and the hinge
     dashpots (BREATHING_CLOTH_RUNS), from the committed records, as a
@@ -6594,10 +6582,10 @@ def breathing_cloth_lines():
         breathing = ("%.2f | %.1f | %.2f | %.1f" % (
             b["frequency"], 100 * b["amplitude"], b["strouhal"],
             b["periods"]) if b.get("resolved") else "none resolved | | |")
-        until = [e[2] for e in run.edits
-                 if e[1] == "fabric/bendingDampingUntil"]
-        dashpots = "%g%s" % (hinge_dashpot_rate(run), " until %s s"
-                             % until[-1] if until else "")
+        until = run_setting(run, PROPS, "fabric/bendingDampingUntil")
+        dashpots = "%g%s" % (run_setting(run, PROPS, "fabric/bendingDamping"),
+                             " until %g s" % until if until is not None
+                             else "")
         rows.append("| %s | %g | %.3f (%.2f) | %s | %g-%g s | %s | %.3f | "
                     "%.3f |" % (ident, cpd, fabric_edge_cells(run) * d0 / cpd,
                                 fabric_edge_cells(run),
