@@ -5299,11 +5299,12 @@ TIME_STEP_T10_PROSE = [
 
 
 def study_levels(results):
-    """The levels of a resolution study: the runs that start as its first
-    run does (the same rest_state_of: a study of levels continuing one
-    source also lists the source, for its table)."""
-    first = results[0][0].rest_state_of
-    return [(r, rec) for r, rec in results if r.rest_state_of == first]
+    """The levels of a resolution study: its runs less those another of its
+    runs continues (rest_state_of: a study of levels continuing one source
+    also lists the source, for its table; levels that each continue their
+    own source, not listed, are all kept)."""
+    sources = set(r.rest_state_of for r, _ in results)
+    return [(r, rec) for r, rec in results if r.ident not in sources]
 
 
 def converged(study):

@@ -12,7 +12,8 @@ hypot(1, 1) = 1.4 %; Dp = 0.8 D0, so C_Dp = C_D0 / 0.64. C_D0 0.80,
 0.76, 0.74 at 18, 27, 40 cells: -5.0 % then -2.6 %, both beyond 1.4 %,
 ratio 0.53: converging. study_levels keeps the three levels and drops
 the source, whose C_D0 (0.99) must appear nowhere; the GCI is computed
-over 40 / 27 / 18 cells. A level not run is named with its command.
+over 40 / 27 / 18 cells. Levels that each continue a source of their own
+(not in the study) are all kept. A level not run is named with its command.
 
 start_transient_lines on descent series held constant in each 0.5 s
 bin: 5.0, 4.0, 5.5, 6.0, 5.8 m/s gives the bins, "lowest 4.00 m/s at
@@ -54,6 +55,12 @@ kept = v.study_levels(study(0.74, 0.76, 0.80, 0.99))
 check("study_levels keeps the levels and drops the source",
       [r.ident for r, _ in kept] == ["t-40", "t-27", "t-18"],
       [r.ident for r, _ in kept])
+
+own = [level("o-27", 27, source="s-27"), level("o-18", 18, source="s-18"),
+       level("o-12", 12, source="s-12")]
+check("levels that each continue their own source are all kept",
+      [r.ident for r, _ in v.study_levels([(r, None) for r in own])]
+      == ["o-27", "o-18", "o-12"], "")
 
 text = "\n".join(v.air_levels_lines(kept))
 rows = text.splitlines()
