@@ -1353,6 +1353,20 @@ RUNS += [seven_level_15s("7ft-cpd%d-until2-15s" % n, n, " with the hinge "
                          UNTIL_TWO)
          for n in (12, 18, 27)]
 SEVEN_CELLS_15S_RUNS |= {"7ft-cpd%d-until2-15s" % n for n in (12, 18, 27)}
+# ... and the 12-cell level with and without the dashpots after 2 s over
+# a long window, from rest to 40 s, read over 10-40 s: the 10-15 s window
+# sits on the descent's slow swing after its overshoot (6.1 m/s at 6-7 s,
+# 5.2-5.6 at 10-13 s), whose phase differs from run to run
+RUNS += [Run("7ft-cpd12%s-40s" % tag, SEVEN, "box 8 D0 wide, 12 cells "
+             "across D0, the tutorial's cloth and load%s, to 40 s; interval "
+             "10-40 s" % setting, ["-cellsPerDiameter", "12"],
+             edits=edits + TO_40, reference="7ft", steady_start=10,
+             steady_end=40)
+         for tag, setting, edits in (
+             ("", "", []),
+             ("-until2", " with the hinge dashpots off from 2 s "
+              "(bendingDampingUntil 2)", UNTIL_TWO))]
+SEVEN_CELLS_15S_RUNS |= {"7ft-cpd12-40s", "7ft-cpd12-until2-40s"}
 RUNS += [seven_undamped_continued(12, "7ft-cpd12-15s"),
          seven_undamped_continued(18, "7ft-default"),
          seven_undamped_continued(27, "7ft-cpd27-15s")]
@@ -2332,6 +2346,12 @@ STUDIES = [
      "edge 1.25 finest cells at every level): cells across D0 at the "
      "canopy (box 8 D0 wide; from rest to 15 s, read over 10-15 s)",
      ["7ft-cpd%d-until2-15s" % n for n in (12, 18, 27)]),
+    ("window7ft12", "7 ft canopy on the guide wire, 12 cells across D0, "
+     "the tutorial with its hinge dashpots throughout and off from 2 s "
+     "(bendingDampingUntil 2): from rest to 15 s read over 10-15 s against "
+     "to 40 s read over 10-40 s",
+     ["7ft-cpd12-15s", "7ft-cpd12-until2-15s", "7ft-cpd12-40s",
+      "7ft-cpd12-until2-40s"]),
     ("resolution7ftUndampedContinued", "7 ft canopy on the guide wire, "
      "the tutorial without hinge dashpots, each level continuing the "
      "damped level's inflated canopy at 15 s (the load from the cells, the "
