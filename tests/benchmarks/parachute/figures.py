@@ -49,7 +49,7 @@ def interval(study=STUDY):
 
 
 def main_job(case_dir, wall):
-    job = val.RUN_BY_ID["7ft-default"]
+    job = val.RUN_BY_ID[val.MAIN_JOB_RUN]
     t0, t1 = job.steady_start, job.steady_end
     a = rep.analyse(case_dir, steady_start=t0, steady_end=t1)
     cd0 = a["dragCoefficient"]["weightBalance"]
