@@ -3984,10 +3984,11 @@ TABLE_HEAD = ("| run | setting | cells | simulated | terminal velocity "
 def run_setting(run, dictionary, entry):
     """A numeric entry of a run's case: its last edit of `entry` (a
     foamDictionary path) in `dictionary`, else the tutorial's own value
-    (the first line that sets the path's last key); None if neither."""
+    (the first line that sets the path's last key); None if neither or
+    if the last edit removes the entry."""
     edited = [e[2] for e in run.edits if e[0] == dictionary and e[1] == entry]
     if edited:
-        return float(edited[-1])
+        return None if edited[-1] == REMOVE else float(edited[-1])
     key = entry.split("/")[-1]
     try:
         with open(os.path.join(TOP, "tutorials", run.tutorial,

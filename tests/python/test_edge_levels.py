@@ -18,6 +18,10 @@ A run of another tutorial without an edge edit (the T-10 at 13 cells
 across D0, study edgeLengthT10) takes that tutorial's edgeLengthPerCell
 (1.25), not the 7 ft one's: with D0 = 10.7 m its edge is 1.25 x 10.7 /
 13 = 1.029 m, listed above the 0.54-cell level (0.446 m).
+
+run_setting reads a run's numeric entry: its edit (1 s), none when its
+edit removes the entry, else the 7 ft tutorial's own bendingDampingUntil
+(2 s).
 """
 
 from checks import check, finish
@@ -109,5 +113,19 @@ check("another tutorial's run takes that tutorial's edge",
       v.fabric_edge_cells(ten_default) == 1.25
       and rows[2].startswith("| 1.25 | 1.029 | t-ten-default |")
       and rows[3].startswith("| 0.5417 | 0.446 | t-ten-fine |"), rows[2:4])
+
+# run_setting: a run's edit of an entry, else the tutorial's value; an
+# edit that removes the entry leaves none
+edited = v.Run("t-until1", v.SEVEN, "synthetic",
+               edits=[(v.PROPS, "fabric/bendingDampingUntil", "1")])
+removed = v.Run("t-throughout", v.SEVEN, "synthetic",
+                edits=[(v.PROPS, "fabric/bendingDampingUntil", v.REMOVE)])
+tutorial = v.Run("t-tutorial", v.SEVEN, "synthetic")
+check("run_setting: the edit's value, none when removed, else the "
+      "tutorial's (the 7 ft tutorial's bendingDampingUntil 2)",
+      [v.run_setting(r, v.PROPS, "fabric/bendingDampingUntil")
+       for r in (edited, removed, tutorial)] == [1.0, None, 2.0],
+      [v.run_setting(r, v.PROPS, "fabric/bendingDampingUntil")
+       for r in (edited, removed, tutorial)])
 
 finish()
