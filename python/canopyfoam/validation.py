@@ -1368,6 +1368,15 @@ RUNS += [Run("7ft-cpd12%s-40s" % tag, SEVEN, "box 8 D0 wide, 12 cells "
              ("-until2", " with the hinge dashpots off from 2 s "
               "(bendingDampingUntil 2)", UNTIL_TWO))]
 SEVEN_CELLS_15S_RUNS |= {"7ft-cpd12-40s", "7ft-cpd12-until2-40s"}
+# ... and the 18-cell level so, made by continuing 7ft-cpd18-until2-15s
+# (its case directory copied, endTime set to 40, decomposed at 15 s, then
+# run --continue)
+RUNS += [Run("7ft-cpd18-until2-40s", SEVEN, "box 8 D0 wide, 18 cells across "
+             "D0, the tutorial's cloth and load with the hinge dashpots off "
+             "from 2 s (bendingDampingUntil 2), to 40 s; interval 10-40 s",
+             ["-cellsPerDiameter", "18"], edits=UNTIL_TWO + TO_40,
+             reference="7ft", steady_start=10, steady_end=40)]
+SEVEN_CELLS_15S_RUNS |= {"7ft-cpd18-until2-40s"}
 RUNS += [seven_undamped_continued(12, "7ft-cpd12-15s"),
          seven_undamped_continued(18, "7ft-default"),
          seven_undamped_continued(27, "7ft-cpd27-15s")]
@@ -2388,6 +2397,11 @@ STUDIES = [
      "to 40 s read over 10-40 s",
      ["7ft-cpd12-15s", "7ft-cpd12-until2-15s", "7ft-cpd12-40s",
       "7ft-cpd12-until2-40s"]),
+    ("resolution7ftUntil2Long", "7 ft canopy on the guide wire, the "
+     "tutorial as it is (the hinge dashpots off from 2 s): cells across D0 "
+     "at the canopy over a long window (box 8 D0 wide; from rest to 40 s, "
+     "read over 10-40 s)",
+     ["7ft-cpd12-until2-40s", "7ft-cpd18-until2-40s"]),
     ("resolution7ftUndampedContinued", "7 ft canopy on the guide wire, "
      "the tutorial without hinge dashpots, each level continuing the "
      "damped level's inflated canopy at 15 s (the load from the cells, the "
@@ -7473,6 +7487,10 @@ def write_report():
             md += UNDAMPED_CONTINUED_PROSE
         if name == "resolution7ftUntil2":
             md += UNTIL_TWO_PROSE
+        if name == "resolution7ftUntil2Long":
+            md += two_level_lines(results, "the tutorial's resolution over "
+                                  "10-40 s (12 and 18 cells across D0)",
+                                  ratio=1.5)
         if name == "window7ft12":
             md += WINDOW_12_PROSE
         if name == "resolution7ftSteady":
