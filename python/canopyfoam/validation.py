@@ -6493,7 +6493,14 @@ UNTIL_TWO_PROSE = [
     "(5.8 cm), in 2.1 and 2.3 coupling iterations a step; the 12-cell "
     "level read over 10-40 s gives 0.865 (study window7ft12): its 10-15 "
     "s value is the window's, and the GCI over 10-15 s measures the "
-    "window as much as the mesh.", ""]
+    "window as much as the mesh. The 27-cell level (536 844 cells) "
+    "inflated with the dashpots at 2.31 coupling iterations a step and "
+    "went on without them at 1.66 (at most 3) through the overshoot "
+    "(6.09 m/s at 4-5 s, as the 18-cell level's 6.07-6.16 at 4-6 s) to "
+    "5.7 s, where it was stopped for time after 52 minutes on 2 ranks "
+    "(beside other work): from rest without the dashpots the same level "
+    "stalled at 0.16 s. Its 15 s run, about 2 hours, is still to make.",
+    ""]
 
 
 MAIN_JOB_NOTES = ["## The main job's resolution", ""]
