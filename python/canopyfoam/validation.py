@@ -1377,6 +1377,39 @@ RUNS += [Run("7ft-cpd18-until2-40s", SEVEN, "box 8 D0 wide, 18 cells across "
              ["-cellsPerDiameter", "18"], edits=UNTIL_TWO + TO_40,
              reference="7ft", steady_start=10, steady_end=40)]
 SEVEN_CELLS_15S_RUNS |= {"7ft-cpd18-until2-40s"}
+# The tutorial as it is, 12 cells across D0 from rest to 40 s read over
+# 10-40 s, in boxes 5.6 and 11 D0 wide (issue 31 §3.1 on the current
+# set-up); with half the time step (maxCo 0.25 and maxDeltaT 0.005: at 12
+# cells the tutorial's step is held by maxDeltaT 0.01, below maxCo 0.5)
+# and with the fabric's edge 0.83 finest cells (§3.3); and at 8 cells
+# across D0, a third level below 12 and 18 (ratio 1.5)
+
+
+def seven_tutorial_40s(ident, cells, setting, edits, width=8):
+    """The 7 ft tutorial as it is (hinge dashpots off from 2 s) at `cells`
+    across D0 in a box `width` D0 wide with `edits`, to 40 s."""
+    return Run(ident, SEVEN, "box %g D0 wide, %d cells across D0, the "
+               "tutorial as it is (the hinge dashpots off from 2 s)%s, to "
+               "40 s; interval 10-40 s" % (width, cells, setting),
+               ["-cellsPerDiameter", "%d" % cells],
+               edits=UNTIL_TWO + edits + TO_40, reference="7ft",
+               steady_start=10, steady_end=40)
+
+
+SEVEN_TUTORIAL_VARIANTS = [
+    seven_tutorial_40s("7ft-cpd12-until2-w%g-40s" % w, 12, "", [
+        (MESH_DICT, "domain/width", "%g" % w)], width=w)
+    for w in (5.6, 11)] + [
+    seven_tutorial_40s("7ft-cpd12-until2-co0.25-40s", 12, ", maxCo 0.25 "
+                       "and maxDeltaT 0.005", [
+                           ("system/controlDict", "maxCo", "0.25"),
+                           ("system/controlDict", "maxDeltaT", "0.005")]),
+    seven_tutorial_40s("7ft-cpd12-until2-edge0.83-40s", 12, ", the "
+                       "fabric's edge 0.83 finest cells",
+                       [(MESH_DICT, "edgeLengthPerCell", "0.83")]),
+    seven_tutorial_40s("7ft-cpd8-until2-40s", 8, "", [])]
+RUNS += SEVEN_TUTORIAL_VARIANTS
+SEVEN_CELLS_15S_RUNS |= {r.ident for r in SEVEN_TUTORIAL_VARIANTS}
 RUNS += [seven_undamped_continued(12, "7ft-cpd12-15s"),
          seven_undamped_continued(18, "7ft-default"),
          seven_undamped_continued(27, "7ft-cpd27-15s")]
@@ -2232,7 +2265,7 @@ for _run in RUNS:
 # on the tutorial as it is are listed in SEVEN_CURRENT_RUNS (and in
 # SEVEN_CELLS_15S_RUNS, which the rules above read as made on the current
 # coupling)
-SEVEN_CURRENT_RUNS = set()
+SEVEN_CURRENT_RUNS = {r.ident for r in SEVEN_TUTORIAL_VARIANTS}
 SEVEN_DASHPOTS_THROUGHOUT = [(PROPS, "fabric/bendingDampingUntil", REMOVE)]
 SEVEN_EIGHTEEN_CELLS = [(MESH_DICT, "cellsPerDiameter", "18")]
 SEVEN_FIFTEEN_SECONDS = [("system/controlDict", "endTime", "15")]
@@ -2401,7 +2434,22 @@ STUDIES = [
      "tutorial as it is (the hinge dashpots off from 2 s): cells across D0 "
      "at the canopy over a long window (box 8 D0 wide; from rest to 40 s, "
      "read over 10-40 s)",
-     ["7ft-cpd12-until2-40s", "7ft-cpd18-until2-40s"]),
+     ["7ft-cpd8-until2-40s", "7ft-cpd12-until2-40s",
+      "7ft-cpd18-until2-40s"]),
+    ("domain7ftTutorial", "7 ft canopy on the guide wire, the tutorial as "
+     "it is (12 cells across D0, the hinge dashpots off from 2 s): the "
+     "box's width (from rest to 40 s, read over 10-40 s)",
+     ["7ft-cpd12-until2-w5.6-40s", "7ft-cpd12-until2-40s",
+      "7ft-cpd12-until2-w11-40s"]),
+    ("timeStep7ftTutorial", "7 ft canopy on the guide wire, the tutorial "
+     "as it is (12 cells across D0): the time step (maxCo 0.5 and "
+     "maxDeltaT 0.01 against 0.25 and 0.005; from rest to 40 s, read over "
+     "10-40 s)", ["7ft-cpd12-until2-40s", "7ft-cpd12-until2-co0.25-40s"]),
+    ("edgeLength7ftTutorial", "7 ft canopy on the guide wire, the "
+     "tutorial as it is (12 cells across D0): the structure's resolution "
+     "(fabric edge 1.25 against 0.83 finest cells; from rest to 40 s, read "
+     "over 10-40 s)",
+     ["7ft-cpd12-until2-40s", "7ft-cpd12-until2-edge0.83-40s"]),
     ("resolution7ftUndampedContinued", "7 ft canopy on the guide wire, "
      "the tutorial without hinge dashpots, each level continuing the "
      "damped level's inflated canopy at 15 s (the load from the cells, the "
