@@ -1380,8 +1380,8 @@ SEVEN_CELLS_15S_RUNS |= {"7ft-cpd18-until2-40s"}
 # The tutorial as it is, 12 cells across D0 from rest to 40 s read over
 # 10-40 s, in boxes 5.6 and 11 D0 wide (issue 31 §3.1 on the current
 # set-up); with half the time step (maxCo 0.25 and maxDeltaT 0.005: at 12
-# cells the tutorial's step is held by maxDeltaT 0.01, below maxCo 0.5)
-# and with the fabric's edge 0.83 finest cells (§3.3); and at 8 cells
+# cells the tutorial's maxCo 0.5 gives steps of 0.008-0.010 s, just under
+# its maxDeltaT 0.01, so both are halved) and with the fabric's edge 0.83 finest cells (§3.3); and at 8 cells
 # across D0, a third level below 12 and 18 (ratio 1.5)
 
 
@@ -6553,6 +6553,42 @@ UNTIL_TWO_LONG_PROSE = [
     "2.63 coupling iterations a step); a 27-cell level over 10-40 s from "
     "rest would take about 5 hours.", ""]
 
+# What the tutorial's box width shows over 10-40 s (study
+# domain7ftTutorial)
+DOMAIN_TUTORIAL_PROSE = [
+    "The tutorial as it is in boxes 5.6, 8 and 11 D0 wide (12 cells "
+    "across D0, from rest to 40 s, read over 10-40 s): C_D0 0.868, 0.865 "
+    "and 0.869, descent 5.48 ± 0.09, 5.49 ± 0.07 and 5.48 ± 0.05 m/s, "
+    "Dp/D0 0.800, 0.800 and 0.797, breathing at 1.23, 1.23 and 1.21 Hz "
+    "with 16.0, 15.8 and 14.0 cm. The two widest boxes differ by 0.5 % "
+    "in C_D0, under the 1 % the issue asks, but their combined 95 % "
+    "interval is ±3.0 % (±2.5 % and ±1.6 %, twice the descent's "
+    "relative half-widths), so the test shows the width's effect to be "
+    "smaller than the 30 s window's own scatter, not that it is below "
+    "1 %. The canopy's projected area blocks 0.8 % of the 8 D0 box's "
+    "section and 0.4 % of the 11 D0 box's; Maskell's solid-wall "
+    "estimate put the effect between 8 and 11 D0 at about 1 % (study "
+    "domain7ft). The 11 D0 box costs 8 % more cells (51 156 against "
+    "47 376: the widening falls on the coarsest level) and the same wall "
+    "time (464 against 469 s on 2 ranks); the tutorial keeps 8 D0.", ""]
+
+# What half the time step shows on the tutorial (study
+# timeStep7ftTutorial)
+TIME_STEP_TUTORIAL_PROSE = [
+    "At 12 cells across D0 the tutorial's maxCo 0.5 sets steps of "
+    "0.008-0.010 s in steady descent (median 0.0096 s, the largest "
+    "Courant number 0.48-0.51 in nine steps of ten), just under its "
+    "maxDeltaT 0.01 s, so this study halves both (maxCo 0.25, maxDeltaT "
+    "0.005: 8 478 steps to 40 s against 4 201). Over 10-40 s: C_D0 0.863 against "
+    "0.865 (-0.2 %), descent 5.50 ± 0.11 against 5.49 ± 0.07 m/s, Dp/D0 "
+    "0.792 against 0.800, breathing at 1.12 Hz with 13.2 cm against 1.23 "
+    "Hz with 15.8 cm. The step's effect on C_D0 is a tenth of the "
+    "window's interval; the breathing's frequency moves by 9 %, the width "
+    "of a few bins of its spectrum (0.033 Hz a bin over 30 s), and the "
+    "half step converges the coupling in fewer iterations (2.16 against "
+    "2.66 a step in steady descent, at most 3 against 5). 669 against 469 "
+    "s on 2 ranks.", ""]
+
 # What the tutorial's levels with the dashpots until 2 s show (study
 # resolution7ftUntil2)
 UNTIL_TWO_PROSE = [
@@ -7577,6 +7613,12 @@ def write_report():
             md += UNTIL_TWO_LONG_PROSE
         if name == "window7ft12":
             md += WINDOW_12_PROSE
+        if name == "domain7ftTutorial":
+            md += DOMAIN_TUTORIAL_PROSE
+        if name == "timeStep7ftTutorial":
+            md += TIME_STEP_TUTORIAL_PROSE
+        if name == "edgeLength7ftTutorial":
+            md += EDGE_TUTORIAL_PROSE
         if name == "resolution7ftSteady":
             md += two_level_lines(results[:2], "the resolution in steady "
                                   "descent (12 and 18 cells across D0)",
