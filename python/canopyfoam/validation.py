@@ -1407,6 +1407,11 @@ SEVEN_TUTORIAL_VARIANTS = [
     seven_tutorial_40s("7ft-cpd12-until2-edge0.83-40s", 12, ", the "
                        "fabric's edge 0.83 finest cells",
                        [(MESH_DICT, "edgeLengthPerCell", "0.83")]),
+    # ... and 1.5 times finer again (0.56 finest cells, 0.10 m): the
+    # 0.83 edge moved C_D0 by -7 %, beyond the pair's interval
+    seven_tutorial_40s("7ft-cpd12-until2-edge0.56-40s", 12, ", the "
+                       "fabric's edge 0.56 finest cells",
+                       [(MESH_DICT, "edgeLengthPerCell", "0.56")]),
     seven_tutorial_40s("7ft-cpd8-until2-40s", 8, "", []),
     # ... the 8-cell level's coupling did not converge at 17.73 s (20
     # iterations, slip 0.23): the same with half the time step
@@ -2453,9 +2458,10 @@ STUDIES = [
      "10-40 s)", ["7ft-cpd12-until2-40s", "7ft-cpd12-until2-co0.25-40s"]),
     ("edgeLength7ftTutorial", "7 ft canopy on the guide wire, the "
      "tutorial as it is (12 cells across D0): the structure's resolution "
-     "(fabric edge 1.25 against 0.83 finest cells; from rest to 40 s, read "
-     "over 10-40 s)",
-     ["7ft-cpd12-until2-40s", "7ft-cpd12-until2-edge0.83-40s"]),
+     "(fabric edge 1.25, 0.83 and 0.56 finest cells; from rest to 40 s, "
+     "read over 10-40 s)",
+     ["7ft-cpd12-until2-40s", "7ft-cpd12-until2-edge0.83-40s",
+      "7ft-cpd12-until2-edge0.56-40s"]),
     ("resolution7ftUndampedContinued", "7 ft canopy on the guide wire, "
      "the tutorial without hinge dashpots, each level continuing the "
      "damped level's inflated canopy at 15 s (the load from the cells, the "
