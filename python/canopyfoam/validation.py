@@ -1419,6 +1419,10 @@ SEVEN_TUTORIAL_VARIANTS = [
                        "and maxDeltaT 0.005", [
                            ("system/controlDict", "maxCo", "0.25"),
                            ("system/controlDict", "maxDeltaT", "0.005")])]
+# ... and the 27-cell level to 40 s, made by continuing
+# 7ft-cpd27-until2-15s as 7ft-cpd18-until2-40s continued its 15 s run
+SEVEN_TUTORIAL_VARIANTS += [
+    seven_tutorial_40s("7ft-cpd27-until2-40s", 27, "", [])]
 RUNS += SEVEN_TUTORIAL_VARIANTS
 SEVEN_CELLS_15S_RUNS |= {r.ident for r in SEVEN_TUTORIAL_VARIANTS}
 RUNS += [seven_undamped_continued(12, "7ft-cpd12-15s"),
@@ -2445,8 +2449,12 @@ STUDIES = [
      "tutorial as it is (the hinge dashpots off from 2 s): cells across D0 "
      "at the canopy over a long window (box 8 D0 wide; from rest to 40 s, "
      "read over 10-40 s)",
-     ["7ft-cpd8-until2-40s", "7ft-cpd12-until2-40s",
-      "7ft-cpd18-until2-40s"]),
+     ["7ft-cpd12-until2-40s", "7ft-cpd18-until2-40s",
+      "7ft-cpd27-until2-40s"]),
+    ("coarse7ftTutorial", "7 ft canopy on the guide wire, the tutorial as "
+     "it is on 8 cells across D0 (the fabric's edge 0.33 m), with the "
+     "tutorial's time step and half of it (from rest to 40 s, read over "
+     "10-40 s)", ["7ft-cpd8-until2-40s", "7ft-cpd8-until2-co0.25-40s"]),
     ("domain7ftTutorial", "7 ft canopy on the guide wire, the tutorial as "
      "it is (12 cells across D0, the hinge dashpots off from 2 s): the "
      "box's width (from rest to 40 s, read over 10-40 s)",
@@ -3286,7 +3294,7 @@ def _f(x, fmt="%.3g"):
 
 # Studies whose report gets the canopy's shape over each run's interval
 SHAPE_STUDIES = ("default7ft", "resolution7ft", "resolution7ftHeld",
-                 "edgeLength7ftLong",
+                 "edgeLength7ftLong", "edgeLength7ftTutorial",
                  "resolution7ftStiff",
                  "resolution7ftSteady", "damping7ft", "hingeDamping7ft",
                  "materialDamping7ft", "tapes7ft",
@@ -3298,7 +3306,9 @@ SHAPE_STUDIES = ("default7ft", "resolution7ft", "resolution7ftHeld",
 # Studies whose report gets the breathing in the Strouhal band (issue 34
 # item 4: long windows, many periods)
 BREATHING_STUDIES = ("domain7ftLong", "damping7ftLong", "resolution7ftHeld",
-                     "edgeLength7ftLong",
+                     "edgeLength7ftLong", "edgeLength7ftTutorial",
+                     "domain7ftTutorial", "timeStep7ftTutorial",
+                     "resolution7ftUntil2Long",
                      "resolutionT10Skirt", "payloadT10SkirtLong",
                      "turbulence7ftConverged")
 
@@ -6559,6 +6569,19 @@ UNTIL_TWO_LONG_PROSE = [
     "2.63 coupling iterations a step); a 27-cell level over 10-40 s from "
     "rest would take about 5 hours.", ""]
 
+# What the tutorial shows on 8 cells across D0 (study coarse7ftTutorial)
+COARSE_TUTORIAL_PROSE = [
+    "On 8 cells across D0 (0.267 m cells, the fabric's edge 0.33 m) the "
+    "tutorial does not hold a steady canopy. With its own time step the "
+    "coupling did not converge at 17.73 s (20 iterations, residual 0.079, "
+    "slip 0.23; the last good state, 17.72 s, written); over 10-17.7 s "
+    "it descended at 5.23 ± 0.10 m/s (C_D0 0.95). With half the step it "
+    "ran to 40 s, but from about 30 s the canopy closes (the projected "
+    "diameter down to 0.23 m) and the descent speeds up to 12 m/s at "
+    "40 s. 8 cells across D0 is therefore below the tutorial's usable "
+    "resolution, and the resolution study (resolution7ftUntil2Long) "
+    "takes 12, 18 and 27 cells.", ""]
+
 # What the tutorial's box width shows over 10-40 s (study
 # domain7ftTutorial)
 DOMAIN_TUTORIAL_PROSE = [
@@ -7613,17 +7636,20 @@ def write_report():
             md += UNTIL_TWO_PROSE
         if name == "resolution7ftUntil2Long":
             md += gci_lines(results)
-            md += two_level_lines(results[1:], "the tutorial's resolution "
+            md += two_level_lines(results[:2], "the tutorial's resolution "
                                   "over 10-40 s (12 and 18 cells across "
                                   "D0)", ratio=1.5)
             md += UNTIL_TWO_LONG_PROSE
         if name == "window7ft12":
             md += WINDOW_12_PROSE
+        if name == "coarse7ftTutorial":
+            md += COARSE_TUTORIAL_PROSE
         if name == "domain7ftTutorial":
             md += DOMAIN_TUTORIAL_PROSE
         if name == "timeStep7ftTutorial":
             md += TIME_STEP_TUTORIAL_PROSE
         if name == "edgeLength7ftTutorial":
+            md += edge_study_lines(results)
             md += EDGE_TUTORIAL_PROSE
         if name == "resolution7ftSteady":
             md += two_level_lines(results[:2], "the resolution in steady "
