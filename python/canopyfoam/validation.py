@@ -6576,9 +6576,10 @@ COARSE_TUTORIAL_PROSE = [
     "coupling did not converge at 17.73 s (20 iterations, residual 0.079, "
     "slip 0.23; the last good state, 17.72 s, written); over 10-17.7 s "
     "it descended at 5.23 ± 0.10 m/s (C_D0 0.95). With half the step it "
-    "ran to 40 s, but from about 30 s the canopy closes (the projected "
-    "diameter down to 0.23 m) and the descent speeds up to 12 m/s at "
-    "40 s. 8 cells across D0 is therefore below the tutorial's usable "
+    "ran to 40 s, but its projected diameter shrinks from 1.69 m (0.79 "
+    "D0) over 10-12 s to 1.33 m over 28-30 s, and from about 30 s the "
+    "canopy closes (0.23 m at 38-40 s) and the descent speeds up to 12 "
+    "m/s at 40 s. 8 cells across D0 is therefore below the tutorial's usable "
     "resolution, and the resolution study (resolution7ftUntil2Long) "
     "takes 12, 18 and 27 cells.", ""]
 
