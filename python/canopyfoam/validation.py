@@ -6568,9 +6568,9 @@ UNTIL_TWO_LONG_PROSE = [
     "7ft-cpd18-until2-15s from 15 s (41.7 minutes on 2 ranks in all, "
     "2.63 coupling iterations a step). The 27-cell level over 10-40 s "
     "(7ft-cpd27-until2-40s) continues 7ft-cpd27-until2-15s from 15 s; at "
-    "about 9 minutes of wall time a simulated second on 2 ranks it takes "
-    "about 4 hours, more than one session, and the GCI above waits for "
-    "it. On 8 cells across D0 the tutorial's canopy does not hold (study "
+    "about 6 minutes of wall time a simulated second on 2 ranks (5.5-6 s "
+    "of the 15 s run) it takes about 2.5 hours, more than one session "
+    "leaves beside the other runs, and the GCI above waits for it. On 8 cells across D0 the tutorial's canopy does not hold (study "
     "coarse7ftTutorial).", ""]
 
 # What the tutorial shows on 8 cells across D0 (study coarse7ftTutorial)
