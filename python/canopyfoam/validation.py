@@ -7241,6 +7241,20 @@ def previous_sections():
     return sections
 
 
+# The prose that closes each study of the tutorial's set-up, after its
+# tables
+TUTORIAL_STUDY_PROSE = {
+    "resolution7ftUndampedContinued": UNDAMPED_CONTINUED_PROSE,
+    "resolution7ftUntil2": UNTIL_TWO_PROSE,
+    "resolution7ftUntil2Long": UNTIL_TWO_LONG_PROSE,
+    "window7ft12": WINDOW_12_PROSE,
+    "coarse7ftTutorial": COARSE_TUTORIAL_PROSE,
+    "domain7ftTutorial": DOMAIN_TUTORIAL_PROSE,
+    "timeStep7ftTutorial": TIME_STEP_TUTORIAL_PROSE,
+    "edgeLength7ftTutorial": EDGE_TUTORIAL_PROSE,
+}
+
+
 def write_report():
     os.makedirs(os.path.dirname(DOC), exist_ok=True)
     # before the figures are rewritten (they would make the tree "dirty")
@@ -7663,27 +7677,14 @@ def write_report():
                     "resolution7ftUndampedContinued",
                     "resolution7ftUntil2"):
             md += gci_lines(results)
-        if name == "resolution7ftUndampedContinued":
-            md += UNDAMPED_CONTINUED_PROSE
-        if name == "resolution7ftUntil2":
-            md += UNTIL_TWO_PROSE
         if name == "resolution7ftUntil2Long":
             md += gci_lines(results)
             md += two_level_lines(results[:2], "the tutorial's resolution "
                                   "over 10-40 s (12 and 18 cells across "
                                   "D0)", ratio=1.5)
-            md += UNTIL_TWO_LONG_PROSE
-        if name == "window7ft12":
-            md += WINDOW_12_PROSE
-        if name == "coarse7ftTutorial":
-            md += COARSE_TUTORIAL_PROSE
-        if name == "domain7ftTutorial":
-            md += DOMAIN_TUTORIAL_PROSE
-        if name == "timeStep7ftTutorial":
-            md += TIME_STEP_TUTORIAL_PROSE
         if name == "edgeLength7ftTutorial":
             md += edge_study_lines(results)
-            md += EDGE_TUTORIAL_PROSE
+        md += TUTORIAL_STUDY_PROSE.get(name, [])
         if name == "resolution7ftSteady":
             md += two_level_lines(results[:2], "the resolution in steady "
                                   "descent (12 and 18 cells across D0)",
