@@ -1377,12 +1377,14 @@ RUNS += [Run("7ft-cpd18-until2-40s", SEVEN, "box 8 D0 wide, 18 cells across "
              ["-cellsPerDiameter", "18"], edits=UNTIL_TWO + TO_40,
              reference="7ft", steady_start=10, steady_end=40)]
 SEVEN_CELLS_15S_RUNS |= {"7ft-cpd18-until2-40s"}
-# The tutorial as it is, 12 cells across D0 from rest to 40 s read over
-# 10-40 s, in boxes 5.6 and 11 D0 wide (issue 31 §3.1 on the current
-# set-up); with half the time step (maxCo 0.25 and maxDeltaT 0.005: at 12
-# cells the tutorial's maxCo 0.5 gives steps of 0.008-0.010 s, just under
-# its maxDeltaT 0.01, so both are halved) and with the fabric's edge 0.83 finest cells (§3.3); and at 8 cells
-# across D0, a third level below 12 and 18 (ratio 1.5)
+# The tutorial as it is from rest to 40 s, read over 10-40 s: on 12
+# cells across D0 in boxes 5.6 and 11 D0 wide (issue 31 §3.1 on the
+# current set-up), with half the time step (maxCo 0.25 and maxDeltaT
+# 0.005: at 12 cells the tutorial's maxCo 0.5 gives steps of 0.008-0.010
+# s, just under its maxDeltaT 0.01, so both are halved) and with the
+# fabric's edge 0.83 and 0.56 finest cells (§3.3); on 8 cells (study
+# coarse7ftTutorial); and on 27 cells, made by continuing
+# 7ft-cpd27-until2-15s as 7ft-cpd18-until2-40s continued its 15 s run
 
 
 def seven_tutorial_40s(ident, cells, setting, edits, width=8):
@@ -1418,10 +1420,7 @@ SEVEN_TUTORIAL_VARIANTS = [
     seven_tutorial_40s("7ft-cpd8-until2-co0.25-40s", 8, ", maxCo 0.25 "
                        "and maxDeltaT 0.005", [
                            ("system/controlDict", "maxCo", "0.25"),
-                           ("system/controlDict", "maxDeltaT", "0.005")])]
-# ... and the 27-cell level to 40 s, made by continuing
-# 7ft-cpd27-until2-15s as 7ft-cpd18-until2-40s continued its 15 s run
-SEVEN_TUTORIAL_VARIANTS += [
+                           ("system/controlDict", "maxDeltaT", "0.005")]),
     seven_tutorial_40s("7ft-cpd27-until2-40s", 27, "", [])]
 RUNS += SEVEN_TUTORIAL_VARIANTS
 SEVEN_CELLS_15S_RUNS |= {r.ident for r in SEVEN_TUTORIAL_VARIANTS}
@@ -5355,7 +5354,8 @@ MAPPED_T10_PROSE = [
     "resolutionT10Kernel; its record is the re-made run) it descends at "
     "6.28 ± 0.07 m/s (C_D0 0.779, Dp/D0 0.757) at 2.52 coupling "
     "iterations a step against 3.22, in 8.4 minutes on 2 ranks against "
-    "12.7: within the earlier run's interval. The mapped levels start without a transient beyond their first "
+    "12.7: within the earlier run's interval. The mapped levels start "
+    "without a transient beyond their first "
     "second (the table of 1 s means). From 13 to 20 cells across D0 C_D0 "
     "falls by 10.7 %, beyond the two runs' intervals, and the breathing "
     "peak goes from 0.18 Hz to 0.21 Hz (periods of 5.5 and 4.8 s, about "
@@ -6591,7 +6591,8 @@ UNTIL_TWO_LONG_PROSE = [
     "(7ft-cpd27-until2-40s) continues 7ft-cpd27-until2-15s from 15 s; at "
     "about 6 minutes of wall time a simulated second on 2 ranks (5.5-6 s "
     "of the 15 s run) it takes about 2.5 hours, more than one session "
-    "leaves beside the other runs, and the GCI above waits for it. On 8 cells across D0 the tutorial's canopy does not hold (study "
+    "leaves beside the other runs, and the GCI above waits for it. On 8 "
+    "cells across D0 the tutorial's canopy does not hold (study "
     "coarse7ftTutorial).", ""]
 
 # What the tutorial shows on 8 cells across D0 (study coarse7ftTutorial)
@@ -6604,8 +6605,8 @@ COARSE_TUTORIAL_PROSE = [
     "ran to 40 s, but its projected diameter shrinks from 1.69 m (0.79 "
     "D0) over 10-12 s to 1.33 m over 28-30 s, and from about 30 s the "
     "canopy closes (0.23 m at 38-40 s) and the descent speeds up to 12 "
-    "m/s at 40 s. 8 cells across D0 is therefore below the tutorial's usable "
-    "resolution, and the resolution study (resolution7ftUntil2Long) "
+    "m/s at 40 s. 8 cells across D0 is therefore below the tutorial's "
+    "usable resolution, and the resolution study (resolution7ftUntil2Long) "
     "takes 12, 18 and 27 cells.", ""]
 
 # What the tutorial's box width shows over 10-40 s (study
@@ -6634,7 +6635,8 @@ TIME_STEP_TUTORIAL_PROSE = [
     "0.008-0.010 s in steady descent (median 0.0096 s, the largest "
     "Courant number 0.48-0.51 in nine steps of ten), just under its "
     "maxDeltaT 0.01 s, so this study halves both (maxCo 0.25, maxDeltaT "
-    "0.005: 8 478 steps to 40 s against 4 201). Over 10-40 s: C_D0 0.863 against "
+    "0.005: 8 478 steps to 40 s against 4 201). Over 10-40 s: C_D0 "
+    "0.863 against "
     "0.865 (-0.2 %), descent 5.50 ± 0.11 against 5.49 ± 0.07 m/s, Dp/D0 "
     "0.792 against 0.800, breathing at 1.12 Hz with 13.2 cm against 1.23 "
     "Hz with 15.8 cm. The step's effect on C_D0 is a tenth of the "
