@@ -53,13 +53,17 @@ class Run:
     """One tutorial variant: tutorial path under tutorials/, Allrun options,
     and (dictionary file, entry path, value) edits; rest_state_of: the id
     of a run whose last canopy state, at rest (rest_state.py), this run
-    starts from (REST_STATE; its edits name it as initialState)."""
+    starts from (REST_STATE; its edits name it as initialState); extends:
+    the id of a run this one goes on from (its case directory at its
+    latest write, `edits` set on top, e.g. a later endTime:
+    prepare_extension)."""
 
     def __init__(self, ident, tutorial, label, options=(), edits=(),
                  reference=None, steady_start=None, steady_end=None,
-                 rest_state_of=None):
+                 rest_state_of=None, extends=None):
         self.ident = ident
         self.rest_state_of = rest_state_of
+        self.extends = extends
         self.tutorial = tutorial
         self.label = label
         self.options = list(options)
@@ -1424,6 +1428,32 @@ SEVEN_TUTORIAL_VARIANTS = [
     seven_tutorial_40s("7ft-cpd27-until2-40s", 27, "", [])]
 RUNS += SEVEN_TUTORIAL_VARIANTS
 SEVEN_CELLS_15S_RUNS |= {r.ident for r in SEVEN_TUTORIAL_VARIANTS}
+
+
+def seven_tutorial_80s(source):
+    """Run `source` (one of SEVEN_TUTORIAL_VARIANTS, to 40 s) going on
+    from its 40 s write to 80 s, read over 40-80 s."""
+    edits = [e for e in source.edits if e[1] != "endTime"]
+    return Run(source.ident.replace("-40s", "-80s"), SEVEN,
+               source.label.replace("to 40 s; interval 10-40 s", "to 80 s "
+                                    "going on from %s at 40 s; interval "
+                                    "40-80 s" % source.ident),
+               source.options,
+               edits=edits + [("system/controlDict", "endTime", "80")],
+               reference="7ft", steady_start=40, steady_end=80,
+               extends=source.ident)
+
+
+# The tutorial's three cloths (edge 1.25, 0.83 and 0.56 finest cells at
+# 12 cells across D0) on to 80 s, read over 40-80 s: over 10-40 s the two
+# finer cloths still sped up (drifts +0.36 and +0.27 m/s, the 0.56 cloth
+# opening from Dp 1.72 to 1.80 m), their levels oscillating by +-5 %
+SEVEN_TUTORIAL_80S = [seven_tutorial_80s(r) for r in RUNS
+                      if r.ident in ("7ft-cpd12-until2-40s",
+                                     "7ft-cpd12-until2-edge0.83-40s",
+                                     "7ft-cpd12-until2-edge0.56-40s")]
+RUNS += SEVEN_TUTORIAL_80S
+SEVEN_CELLS_15S_RUNS |= {r.ident for r in SEVEN_TUTORIAL_80S}
 RUNS += [seven_undamped_continued(12, "7ft-cpd12-15s"),
          seven_undamped_continued(18, "7ft-default"),
          seven_undamped_continued(27, "7ft-cpd27-15s")]
@@ -2279,7 +2309,8 @@ for _run in RUNS:
 # on the tutorial as it is are listed in SEVEN_CURRENT_RUNS (and in
 # SEVEN_CELLS_15S_RUNS, which the rules above read as made on the current
 # coupling)
-SEVEN_CURRENT_RUNS = {r.ident for r in SEVEN_TUTORIAL_VARIANTS}
+SEVEN_CURRENT_RUNS = {r.ident for r in SEVEN_TUTORIAL_VARIANTS
+                      + SEVEN_TUTORIAL_80S}
 SEVEN_DASHPOTS_THROUGHOUT = [(PROPS, "fabric/bendingDampingUntil", REMOVE)]
 SEVEN_EIGHTEEN_CELLS = [(MESH_DICT, "cellsPerDiameter", "18")]
 SEVEN_FIFTEEN_SECONDS = [("system/controlDict", "endTime", "15")]
@@ -2469,6 +2500,11 @@ STUDIES = [
      "read over 10-40 s)",
      ["7ft-cpd12-until2-40s", "7ft-cpd12-until2-edge0.83-40s",
       "7ft-cpd12-until2-edge0.56-40s"]),
+    ("edgeLength7ftTutorialTo80", "7 ft canopy on the guide wire, the "
+     "tutorial as it is (12 cells across D0): the structure's resolution "
+     "over a longer window (fabric edge 1.25, 0.83 and 0.56 finest cells; "
+     "each run of study edgeLength7ftTutorial going on from 40 s to 80 s, "
+     "read over 40-80 s)", [r.ident for r in SEVEN_TUTORIAL_80S]),
     ("resolution7ftUndampedContinued", "7 ft canopy on the guide wire, "
      "the tutorial without hinge dashpots, each level continuing the "
      "damped level's inflated canopy at 15 s (the load from the cells, the "
@@ -2955,14 +2991,8 @@ def last_payload_velocity(case_dir):
         "payload_Ux", "payload_Uy", "payload_Uz")[-1])
 
 
-def prepare(run):
-    """Fresh copy of the tutorial with the run's edits."""
-    src = os.path.join(TOP, "tutorials", run.tutorial)
-    if not os.path.isdir(src):
-        raise RuntimeError("run %s: no tutorial %s" % (run.ident, src))
-    if os.path.exists(run.case_dir):
-        shutil.rmtree(run.case_dir)
-    shutil.copytree(src, run.case_dir, symlinks=True)
+def apply_edits(run):
+    """Set the run's (file, entry, value) edits in its case directory."""
     for rel, entry, value in run.edits:
         path = os.path.join(run.case_dir, rel)
         if entry == NARROW_BOX_ENTRY:
@@ -2983,6 +3013,17 @@ def prepare(run):
         if out.returncode != 0:
             raise RuntimeError("run %s: cannot set %s in %s: %s"
                                % (run.ident, entry, rel, out.stderr.strip()))
+
+
+def prepare(run):
+    """Fresh copy of the tutorial with the run's edits."""
+    src = os.path.join(TOP, "tutorials", run.tutorial)
+    if not os.path.isdir(src):
+        raise RuntimeError("run %s: no tutorial %s" % (run.ident, src))
+    if os.path.exists(run.case_dir):
+        shutil.rmtree(run.case_dir)
+    shutil.copytree(src, run.case_dir, symlinks=True)
+    apply_edits(run)
     if run.rest_state_of:
         source = os.path.join(RUN_BY_ID[run.rest_state_of].case_dir,
                               "postProcessing", "canopy", "canopy.h5")
@@ -2994,6 +3035,64 @@ def prepare(run):
                                "(`bin/canopy-validate run %s` first): %s"
                                % (run.ident, run.rest_state_of,
                                   run.rest_state_of, e))
+
+
+def prepare_extension(run, ranks):
+    """Make run `run` the continuation of its complete source run
+    (run.extends): the source's case directory copied with its latest
+    write, the run's edits set on top (e.g. a later endTime), that write
+    decomposed for `ranks` and the case marked stopped, so execute(resume)
+    goes on from it with the source's wall time and code version carried
+    over. Nothing is left behind if a step fails."""
+    source = RUN_BY_ID[run.extends]
+    state = run_state(source)
+    if state != "complete":
+        raise RuntimeError("run %s goes on from run %s, which is %s "
+                           "(`bin/canopy-validate run %s` first)"
+                           % (run.ident, source.ident, state, source.ident))
+    _, source_ranks = wall_time(source.case_dir)
+    if source_ranks != ranks:
+        raise RuntimeError("run %s goes on from run %s, made on %s ranks: "
+                           "give -np %s" % (run.ident, source.ident,
+                                            source_ranks, source_ranks))
+    times = [(_time_name(n), n) for n in os.listdir(source.case_dir)
+             if _time_name(n) is not None
+             and os.path.isdir(os.path.join(source.case_dir, n))]
+    latest = max(times)[1] if times else None
+    if latest is None or float(latest) == 0.0:
+        raise RuntimeError("run %s: run %s has no written time after 0 to "
+                           "go on from" % (run.ident, source.ident))
+    if os.path.exists(run.case_dir):
+        shutil.rmtree(run.case_dir)
+    try:
+        shutil.copytree(source.case_dir, run.case_dir, symlinks=True,
+                        ignore=shutil.ignore_patterns("processor*"))
+        apply_edits(run)
+        stale = report_json(run.case_dir)
+        if os.path.exists(stale):
+            os.remove(stale)
+        command = ["decomposePar", "-force", "-time", latest]
+        if os.path.exists(os.path.join(run.case_dir, "system",
+                                       "decomposeParDict.run")):
+            command += ["-decomposeParDict", "system/decomposeParDict.run"]
+        if ranks > 1:
+            with open(os.path.join(run.case_dir, "log.decomposePar.extend"),
+                      "w") as out:
+                status = subprocess.run(command, cwd=run.case_dir,
+                                        stdout=out, stderr=subprocess.STDOUT)
+            if status.returncode != 0:
+                raise RuntimeError("run %s: decomposePar of run %s's time %s "
+                                   "failed (log.decomposePar.extend)"
+                                   % (run.ident, source.ident, latest))
+        with open(stopped_file(run.case_dir), "w") as f:
+            f.write("extends %s from %s s\n" % (source.ident, latest))
+        earlier = os.path.join(RUN_ROOT, source.ident + ".out")
+        if os.path.exists(earlier):
+            shutil.copy(earlier, os.path.join(RUN_ROOT, run.ident + ".out"))
+    except BaseException:
+        shutil.rmtree(run.case_dir, ignore_errors=True)
+        raise
+    return latest
 
 
 def continue_options(options):
@@ -3100,7 +3199,13 @@ def select(names):
         else:
             raise SystemExit("canopy-validate: unknown run or study '%s' "
                              "(see --list)" % name)
-        chosen += [i for i in ids if i not in chosen]
+        for i in ids:
+            # a run that goes on from another comes after it
+            needs = []
+            while i is not None and i not in chosen and i not in needs:
+                needs.insert(0, i)
+                i = RUN_BY_ID[i].extends
+            chosen += needs
     return chosen
 
 
@@ -3294,7 +3399,7 @@ def _f(x, fmt="%.3g"):
 # Studies whose report gets the canopy's shape over each run's interval
 SHAPE_STUDIES = ("default7ft", "resolution7ft", "resolution7ftHeld",
                  "edgeLength7ftLong", "edgeLength7ftTutorial",
-                 "resolution7ftStiff",
+                 "edgeLength7ftTutorialTo80", "resolution7ftStiff",
                  "resolution7ftSteady", "damping7ft", "hingeDamping7ft",
                  "materialDamping7ft", "tapes7ft",
                  "tolerance7ftLong",
@@ -3306,7 +3411,7 @@ SHAPE_STUDIES = ("default7ft", "resolution7ft", "resolution7ftHeld",
 # item 4: long windows, many periods)
 BREATHING_STUDIES = ("domain7ftLong", "damping7ftLong", "resolution7ftHeld",
                      "edgeLength7ftLong", "edgeLength7ftTutorial",
-                     "domain7ftTutorial", "timeStep7ftTutorial",
+                     "edgeLength7ftTutorialTo80", "domain7ftTutorial", "timeStep7ftTutorial",
                      "resolution7ftUntil2Long",
                      "resolutionT10Skirt", "payloadT10SkirtLong",
                      "turbulence7ftConverged")
@@ -7719,7 +7824,7 @@ def write_report():
             md += two_level_lines(results[:2], "the tutorial's resolution "
                                   "over 10-40 s (12 and 18 cells across "
                                   "D0)", ratio=1.5)
-        if name == "edgeLength7ftTutorial":
+        if name in ("edgeLength7ftTutorial", "edgeLength7ftTutorialTo80"):
             md += edge_study_lines(results)
         md += TUTORIAL_STUDY_PROSE.get(name, [])
         if name == "resolution7ftSteady":
@@ -8840,6 +8945,11 @@ def main(argv=None):
             continue
         resume = args.resume and run_state(run) in ("failed", "stopped")
         try:
+            if run.extends and not resume:
+                latest = prepare_extension(run, args.np)
+                print("canopy-validate: %s goes on from %s's write at %s s"
+                      % (ident, run.extends, latest), flush=True)
+                resume = True
             ok = execute(run, args.np, resume) and ok
             record(run)     # its record in docs/validation/runs
             if run_state(run) == "complete" and not args.keep_fields:
