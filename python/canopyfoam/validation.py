@@ -1425,7 +1425,18 @@ SEVEN_TUTORIAL_VARIANTS = [
                        "and maxDeltaT 0.005", [
                            ("system/controlDict", "maxCo", "0.25"),
                            ("system/controlDict", "maxDeltaT", "0.005")]),
-    seven_tutorial_40s("7ft-cpd27-until2-40s", 27, "", [])]
+    seven_tutorial_40s("7ft-cpd27-until2-40s", 27, "", []),
+    # ... and the tutorial's cloth with its markers at half a cell
+    # (forcing.markerSpacing 0.0889 m against the default, the cell's 0.178
+    # m: every triangle split in four or sixteen): the tutorial's cloth has
+    # 372 markers on 192 triangles, the 0.83 edge 368 on 368 and the 0.56
+    # edge 768 on 768, so this tells the markers' density from the cloth's
+    # (an IB surface's markers h/2 apart hold it tight: Olson & Layton
+    # 2014, Contemp. Math. 628, p. 4)
+    seven_tutorial_40s("7ft-cpd12-until2-markers0.5-40s", 12, ", its "
+                       "markers at half a cell (forcing.markerSpacing "
+                       "0.0889 m)", [(PROPS, "coupling/forcing/markerSpacing",
+                                      "0.0889")])]
 RUNS += SEVEN_TUTORIAL_VARIANTS
 SEVEN_CELLS_15S_RUNS |= {r.ident for r in SEVEN_TUTORIAL_VARIANTS}
 
@@ -2500,6 +2511,11 @@ STUDIES = [
      "read over 10-40 s)",
      ["7ft-cpd12-until2-40s", "7ft-cpd12-until2-edge0.83-40s",
       "7ft-cpd12-until2-edge0.56-40s"]),
+    ("markers7ftTutorial", "7 ft canopy on the guide wire, the tutorial "
+     "as it is (12 cells across D0): its cloth's markers at the cell size "
+     "and at half of it (forcing.markerSpacing; from rest to 40 s, read "
+     "over 10-40 s)", ["7ft-cpd12-until2-40s",
+                       "7ft-cpd12-until2-markers0.5-40s"]),
     ("edgeLength7ftTutorialTo80", "7 ft canopy on the guide wire, the "
      "tutorial as it is (12 cells across D0): the structure's resolution "
      "over a longer window (fabric edge 1.25, 0.83 and 0.56 finest cells; "
@@ -3399,7 +3415,8 @@ def _f(x, fmt="%.3g"):
 # Studies whose report gets the canopy's shape over each run's interval
 SHAPE_STUDIES = ("default7ft", "resolution7ft", "resolution7ftHeld",
                  "edgeLength7ftLong", "edgeLength7ftTutorial",
-                 "edgeLength7ftTutorialTo80", "resolution7ftStiff",
+                 "edgeLength7ftTutorialTo80", "markers7ftTutorial",
+                 "resolution7ftStiff",
                  "resolution7ftSteady", "damping7ft", "hingeDamping7ft",
                  "materialDamping7ft", "tapes7ft",
                  "tolerance7ftLong",
@@ -3411,7 +3428,8 @@ SHAPE_STUDIES = ("default7ft", "resolution7ft", "resolution7ftHeld",
 # item 4: long windows, many periods)
 BREATHING_STUDIES = ("domain7ftLong", "damping7ftLong", "resolution7ftHeld",
                      "edgeLength7ftLong", "edgeLength7ftTutorial",
-                     "edgeLength7ftTutorialTo80", "domain7ftTutorial", "timeStep7ftTutorial",
+                     "edgeLength7ftTutorialTo80", "markers7ftTutorial",
+                     "domain7ftTutorial", "timeStep7ftTutorial",
                      "resolution7ftUntil2Long",
                      "resolutionT10Skirt", "payloadT10SkirtLong",
                      "turbulence7ftConverged")
