@@ -1436,7 +1436,25 @@ SEVEN_TUTORIAL_VARIANTS = [
     seven_tutorial_40s("7ft-cpd12-until2-markers0.5-40s", 12, ", its "
                        "markers at half a cell (forcing.markerSpacing "
                        "0.0889 m)", [(PROPS, "coupling/forcing/markerSpacing",
-                                      "0.0889")])]
+                                      "0.0889")])] + [
+    # ... the markers at half a cell moved C_D0 by -4 % and the breathing
+    # from 16 to 6 cm: each cloth with markers finer again, so that the
+    # cloth's and the markers' resolution are told apart (study
+    # markers7ftTutorial)
+    seven_tutorial_40s("7ft-cpd12-until2%s-markers%s-40s"
+                       % (edge and "-edge%s" % edge, share), 12,
+                       "%s, its markers at %s (forcing.markerSpacing %s m)"
+                       % (edge and ", the fabric's edge %s finest cells"
+                          % edge, {"0.5": "half a cell",
+                                   "0.25": "a quarter of a cell"}[share],
+                          spacing),
+                       ([(MESH_DICT, "edgeLengthPerCell", edge)] if edge
+                        else [])
+                       + [(PROPS, "coupling/forcing/markerSpacing",
+                           spacing)])
+    for edge, share, spacing in (("0.83", "0.5", "0.0889"),
+                                 ("", "0.25", "0.0445"),
+                                 ("0.56", "0.25", "0.0445"))]
 RUNS += SEVEN_TUTORIAL_VARIANTS
 SEVEN_CELLS_15S_RUNS |= {r.ident for r in SEVEN_TUTORIAL_VARIANTS}
 
@@ -2512,10 +2530,15 @@ STUDIES = [
      ["7ft-cpd12-until2-40s", "7ft-cpd12-until2-edge0.83-40s",
       "7ft-cpd12-until2-edge0.56-40s"]),
     ("markers7ftTutorial", "7 ft canopy on the guide wire, the tutorial "
-     "as it is (12 cells across D0): its cloth's markers at the cell size "
-     "and at half of it (forcing.markerSpacing; from rest to 40 s, read "
-     "over 10-40 s)", ["7ft-cpd12-until2-40s",
-                       "7ft-cpd12-until2-markers0.5-40s"]),
+     "as it is (12 cells across D0): the cloth's markers at the cell size "
+     "and finer (forcing.markerSpacing), for the fabric's edge at 1.25, "
+     "0.83 and 0.56 finest cells (from rest to 40 s, read over 10-40 s)", ["7ft-cpd12-until2-40s",
+                       "7ft-cpd12-until2-markers0.5-40s",
+                       "7ft-cpd12-until2-markers0.25-40s",
+                       "7ft-cpd12-until2-edge0.83-40s",
+                       "7ft-cpd12-until2-edge0.83-markers0.5-40s",
+                       "7ft-cpd12-until2-edge0.56-40s",
+                       "7ft-cpd12-until2-edge0.56-markers0.25-40s"]),
     ("edgeLength7ftTutorialTo80", "7 ft canopy on the guide wire, the "
      "tutorial as it is (12 cells across D0): the structure's resolution "
      "over a longer window (fabric edge 1.25, 0.83 and 0.56 finest cells; "
