@@ -5619,6 +5619,22 @@ def study_levels(results):
     return [(r, rec) for r, rec in results if r.ident not in sources]
 
 
+def study_fineness(study, runs):
+    """What a study refines, as resolution_estimates' fineness: None (cells
+    across D0) when its runs differ in cells, the fabric edge's inverse in
+    finest cells when they share the cells and differ in edge (the edge
+    studies); a study whose runs share both refines neither, and is
+    refused (SystemExit naming it)."""
+    cells = {cells_per_diameter(r) for r in runs}
+    if len(cells) > 1:
+        return None
+    if len({fabric_edge_cells(r) for r in runs}) > 1:
+        return lambda run: 1.0 / fabric_edge_cells(run)
+    raise SystemExit("canopy-validate: %s is not a resolution study: its "
+                     "runs share the cells across D0 and the fabric's edge"
+                     % study)
+
+
 def converged(study):
     """The converged values of a resolution study, for the benchmarks: a
     dict {quantity: {finest, extrapolated, gci, kind, runs}} from the
@@ -5632,7 +5648,8 @@ def converged(study):
                             for i in ids])
     if study in CONVERGED_WINDOWS:
         results = over_window(results, *CONVERGED_WINDOWS[study])
-    done, table = resolution_estimates(results)
+    done, table = resolution_estimates(results, study_fineness(
+        study, [RUN_BY_ID[i] for i in ids]))
     if not table:
         raise SystemExit("canopy-validate: %s needs three complete runs, "
                          "has %d" % (study, len(done)))

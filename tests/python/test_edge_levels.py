@@ -22,6 +22,12 @@ across D0, study edgeLengthT10) takes that tutorial's edgeLengthPerCell
 run_setting reads a run's numeric entry: its edit (1 s), none when its
 edit removes the entry, else the 7 ft tutorial's own bendingDampingUntil
 (2 s).
+
+study_fineness (the refinement `canopy-validate converged` reads): the
+edge's inverse for runs on the same cells with edges 1.25 and 0.5417
+(0.8 and 1.846 per finest cell), None (cells across D0) for runs on 12
+and 18 cells, and a refusal naming the study for runs that share both
+(e.g. the markers' spacing varied alone).
 """
 
 from checks import check, finish
@@ -127,5 +133,24 @@ check("run_setting: the edit's value, none when removed, else the "
        for r in (edited, removed, tutorial)] == [1.0, None, 2.0],
       [v.run_setting(r, v.PROPS, "fabric/bendingDampingUntil")
        for r in (edited, removed, tutorial)])
+
+fineness = v.study_fineness("t-edges", [ten_default, ten_fine])
+check("study_fineness: the edge's inverse where the cells are shared",
+      fineness is not None and abs(fineness(ten_default) - 0.8) < 1e-12
+      and abs(fineness(ten_fine) - 1 / 0.5417) < 1e-12,
+      fineness and [fineness(ten_default), fineness(ten_fine)])
+coarse = v.Run("t-cpd12", v.SEVEN, "synthetic", ["-cellsPerDiameter", "12"])
+fine = v.Run("t-cpd18", v.SEVEN, "synthetic", ["-cellsPerDiameter", "18"])
+check("study_fineness: cells across D0 where they differ",
+      v.study_fineness("t-cells", [coarse, fine]) is None, "None")
+try:
+    v.study_fineness("t-markers", [coarse, v.Run(
+        "t-markers", v.SEVEN, "synthetic", ["-cellsPerDiameter", "12"],
+        [(v.PROPS, "coupling/forcing/markerSpacing", "0.0889")])])
+    refusal = None
+except SystemExit as e:
+    refusal = str(e)
+check("study_fineness: refuses a study that refines neither",
+      refusal is not None and "t-markers" in refusal, refusal)
 
 finish()
