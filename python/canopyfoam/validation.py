@@ -1392,11 +1392,14 @@ SEVEN_CELLS_15S_RUNS |= {"7ft-cpd18-until2-40s"}
 
 
 def seven_tutorial_40s(ident, cells, setting, edits, width=8):
-    """The 7 ft tutorial as it is (hinge dashpots off from 2 s) at `cells`
+    """The 7 ft tutorial with its hinge dashpots off from 2 s (and its
+    markers a cell apart unless `setting` says otherwise) at `cells`
     across D0 in a box `width` D0 wide with `edits`, to 40 s."""
+    if "markers" not in setting:
+        setting = ", its markers a cell apart" + setting
     return Run(ident, SEVEN, "box %g D0 wide, %d cells across D0, the "
-               "tutorial as it is (the hinge dashpots off from 2 s)%s, to "
-               "40 s; interval 10-40 s" % (width, cells, setting),
+               "tutorial (the hinge dashpots off from 2 s)%s, to 40 s; "
+               "interval 10-40 s" % (width, cells, setting),
                ["-cellsPerDiameter", "%d" % cells],
                edits=UNTIL_TWO + edits + TO_40, reference="7ft",
                steady_start=10, steady_end=40)
@@ -2525,7 +2528,8 @@ STUDIES = [
      ["7ft-cpd12-15s", "7ft-cpd12-until2-15s", "7ft-cpd12-40s",
       "7ft-cpd12-until2-40s"]),
     ("resolution7ftUntil2Long", "7 ft canopy on the guide wire, the "
-     "tutorial as it is (the hinge dashpots off from 2 s): cells across D0 "
+     "tutorial with its markers a cell apart (the hinge dashpots off from 2 "
+     "s): cells across D0 "
      "at the canopy over a long window (box 8 D0 wide; from rest to 40 s, "
      "read over 10-40 s)",
      ["7ft-cpd12-until2-40s", "7ft-cpd18-until2-40s",
@@ -2535,29 +2539,32 @@ STUDIES = [
      "a cell apart): cells across D0 at the canopy (box 8 D0 wide; from "
      "rest to 40 s, read over 10-40 s)",
      ["7ft-cpd%d-markerhalf-40s" % n for n in (12, 18, 27)]),
-    ("coarse7ftTutorial", "7 ft canopy on the guide wire, the tutorial as "
-     "it is on 8 cells across D0 (the fabric's edge 0.33 m), with the "
+    ("coarse7ftTutorial", "7 ft canopy on the guide wire, the tutorial "
+     "with its markers a cell apart on 8 cells across D0 (the fabric's edge 0.33 m), with the "
      "tutorial's time step and half of it (from rest to 40 s, read over "
      "10-40 s)", ["7ft-cpd8-until2-40s", "7ft-cpd8-until2-co0.25-40s"]),
-    ("domain7ftTutorial", "7 ft canopy on the guide wire, the tutorial as "
-     "it is (12 cells across D0, the hinge dashpots off from 2 s): the "
+    ("domain7ftTutorial", "7 ft canopy on the guide wire, the tutorial "
+     "with its markers a cell apart (12 cells across D0, the hinge "
+     "dashpots off from 2 s): the "
      "box's width (from rest to 40 s, read over 10-40 s)",
      ["7ft-cpd12-until2-w5.6-40s", "7ft-cpd12-until2-40s",
       "7ft-cpd12-until2-w11-40s"]),
     ("timeStep7ftTutorial", "7 ft canopy on the guide wire, the tutorial "
-     "as it is (12 cells across D0): the time step (maxCo 0.5 and "
+     "with its markers a cell apart (12 cells across D0): the time step (maxCo 0.5 and "
      "maxDeltaT 0.01 against 0.25 and 0.005; from rest to 40 s, read over "
      "10-40 s)", ["7ft-cpd12-until2-40s", "7ft-cpd12-until2-co0.25-40s"]),
     ("edgeLength7ftTutorial", "7 ft canopy on the guide wire, the "
-     "tutorial as it is (12 cells across D0): the structure's resolution "
+     "tutorial with its markers a cell apart (12 cells across D0): the "
+     "structure's resolution "
      "(fabric edge 1.25, 0.83 and 0.56 finest cells; from rest to 40 s, "
      "read over 10-40 s)",
      ["7ft-cpd12-until2-40s", "7ft-cpd12-until2-edge0.83-40s",
       "7ft-cpd12-until2-edge0.56-40s"]),
     ("markers7ftTutorial", "7 ft canopy on the guide wire, the tutorial "
-     "as it is (12 cells across D0): the cloth's markers at the cell size "
-     "and finer (forcing.markerSpacing), for the fabric's edge at 1.25, "
-     "0.83 and 0.56 finest cells (from rest to 40 s, read over 10-40 s)", ["7ft-cpd12-until2-40s",
+     "(12 cells across D0, the hinge dashpots off from 2 s): the cloth's "
+     "markers a cell apart and closer (forcing.markerSpacing), for the "
+     "fabric's edge at 1.25, 0.83 and 0.56 finest cells (from rest to 40 "
+     "s, read over 10-40 s)", ["7ft-cpd12-until2-40s",
                        "7ft-cpd12-until2-markers0.5-40s",
                        "7ft-cpd12-until2-markers0.25-40s",
                        "7ft-cpd12-until2-edge0.83-40s",
@@ -2565,7 +2572,8 @@ STUDIES = [
                        "7ft-cpd12-until2-edge0.56-40s",
                        "7ft-cpd12-until2-edge0.56-markers0.25-40s"]),
     ("edgeLength7ftTutorialTo80", "7 ft canopy on the guide wire, the "
-     "tutorial as it is (12 cells across D0): the structure's resolution "
+     "tutorial with its markers a cell apart (12 cells across D0): the "
+     "structure's resolution "
      "over a longer window (fabric edge 1.25, 0.83 and 0.56 finest cells; "
      "each run of study edgeLength7ftTutorial going on from 40 s to 80 s, "
      "read over 40-80 s)", [r.ident for r in SEVEN_TUTORIAL_80S]),
