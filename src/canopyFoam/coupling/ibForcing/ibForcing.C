@@ -90,8 +90,8 @@ Foam::wordList Foam::ibForcing::validKeys()
 {
     return
     {
-        "kernel", "markerSpacing", "iterations", "tangential",
-        "pressureOffset"
+        "kernel", "markerSpacing", "markerSpacingCells", "iterations",
+        "tangential", "pressureOffset"
     };
 }
 
@@ -136,18 +136,35 @@ Foam::ibForcing::ibForcing
         )
     ),
     uniformSpacing_(forcing.found("markerSpacing")),
+    spacingCells_
+    (
+        forcing.positive
+        (
+            "markerSpacingCells", "marker spacing [local cell sizes]", 1
+        )
+    ),
     spacing_
     (
         forcing.positive
         (
             "markerSpacing", "marker spacing [m]",
-            Foam::cbrt(gMin(mesh.cellVolumes()))
+            spacingCells_*Foam::cbrt(gMin(mesh.cellVolumes()))
         )
     ),
     totalForce_(Zero),
     coarseMarkers_(0)
 {
     forcing.rejectUnknown(validKeys());
+    if (uniformSpacing_ && forcing.found("markerSpacingCells"))
+    {
+        forcing.fail
+        (
+            "markerSpacingCells",
+            "is given with markerSpacing: give the spacing in metres "
+            "(markerSpacing) or in local cell sizes (markerSpacingCells), "
+            "not both"
+        );
+    }
     kernel_ = deltaKernel::New(kernelName_);
 
     // The triangles' subdivision: a restart's own, else from the spacing
@@ -159,7 +176,13 @@ Foam::ibForcing::ibForcing
         (
             uniformSpacing_
           ? scalarField(nTriangles, spacing_)
-          : localCellSizes(structure.triangleCentres(), spacing_)()
+          : scalarField
+            (
+                spacingCells_*localCellSizes
+                (
+                    structure.triangleCentres(), spacing_/spacingCells_
+                )
+            )
         );
         levels = canopyMarkers::levels(structure.model(), triangleSpacing);
     }
@@ -357,7 +380,7 @@ void Foam::ibForcing::readState(const dictionary& dict)
             << "Entry 'markerForce' holds " << F.size() << " marker forces,"
             << " but the canopy has " << markerForce_.size()
             << " markers (were the canopy or coupling.forcing.markerSpacing"
-            << " changed"
+            << " or markerSpacingCells changed"
             << " since it was written?)" << exit(FatalIOError);
     }
     markerForce_ = F;
@@ -368,9 +391,12 @@ void Foam::ibForcing::readState(const dictionary& dict)
 void Foam::ibForcing::writeInfo(Ostream& os) const
 {
     os  << markers_->size() << " markers on " << markers_->levels().size()
-        << " canopy triangles (spacing "
-        << (uniformSpacing_ ? "" : "local cell size, min ") << spacing_
-        << " m), kernel " << kernelName_ << ", " << forcingIterations_
+        << " canopy triangles (spacing ";
+    if (!uniformSpacing_)
+    {
+        os  << spacingCells_ << " local cell size, min ";
+    }
+    os  << spacing_ << " m), kernel " << kernelName_ << ", " << forcingIterations_
         << " forcing iterations, " << (noSlip_ ? "noSlip" : "free");
 }
 
