@@ -2377,7 +2377,22 @@ SEVEN_MARKER_HALF_RUNS = [
         "the markers half a cell apart), to 40 s; interval 10-40 s" % n,
         ["-cellsPerDiameter", "%d" % n], reference="7ft", steady_start=10,
         steady_end=40)
-    for n in (12, 18, 27)]
+    for n in (12, 18, 27)] + [
+    # ... and the main job with half its time step, and with its
+    # coupling's tolerance halved and doubled (study numerics7ftMarkerHalf)
+    Run("7ft-cpd12-markerhalf-%s-40s" % name, SEVEN, "box 8 D0 wide, 12 "
+        "cells across D0, the tutorial as it is (the hinge dashpots off "
+        "from 2 s, the markers half a cell apart), %s, to 40 s; interval "
+        "10-40 s" % setting, ["-cellsPerDiameter", "12"], edits=edits,
+        reference="7ft", steady_start=10, steady_end=40)
+    for name, setting, edits in (
+        ("co0.25", "maxCo 0.25 and maxDeltaT 0.005",
+         [("system/controlDict", "maxCo", "0.25"),
+          ("system/controlDict", "maxDeltaT", "0.005")]),
+        ("tol2.5e-3", "coupling tolerance 2.5e-3",
+         [(PROPS, "coupling/tolerance", "2.5e-3")]),
+        ("tol1e-2", "coupling tolerance 1e-2",
+         [(PROPS, "coupling/tolerance", "1e-2")]))]
 for _run in RUNS:
     if _run.tutorial == SEVEN and not _sets(
             _run, SEVEN_MARKERS_AT_CELL[0][1]):
@@ -2539,6 +2554,14 @@ STUDIES = [
      "a cell apart): cells across D0 at the canopy (box 8 D0 wide; from "
      "rest to 40 s, read over 10-40 s)",
      ["7ft-cpd%d-markerhalf-40s" % n for n in (12, 18, 27)]),
+    ("numerics7ftMarkerHalf", "7 ft canopy on the guide wire, the "
+     "tutorial as it is (12 cells across D0, the markers half a cell "
+     "apart): the time step (maxCo 0.5 and maxDeltaT 0.01 against 0.25 "
+     "and 0.005) and the coupling's tolerance (5e-3 against 2.5e-3 and "
+     "1e-2; from rest to 40 s, read over 10-40 s)",
+     ["7ft-cpd12-markerhalf-40s", "7ft-cpd12-markerhalf-co0.25-40s",
+      "7ft-cpd12-markerhalf-tol2.5e-3-40s",
+      "7ft-cpd12-markerhalf-tol1e-2-40s"]),
     ("coarse7ftTutorial", "7 ft canopy on the guide wire, the tutorial "
      "with its markers a cell apart on 8 cells across D0 (the fabric's edge 0.33 m), with the "
      "tutorial's time step and half of it (from rest to 40 s, read over "
@@ -3472,7 +3495,7 @@ def _f(x, fmt="%.3g"):
 SHAPE_STUDIES = ("default7ft", "resolution7ft", "resolution7ftHeld",
                  "edgeLength7ftLong", "edgeLength7ftTutorial",
                  "edgeLength7ftTutorialTo80", "markers7ftTutorial",
-                 "resolution7ftStiff",
+                 "numerics7ftMarkerHalf", "resolution7ftStiff",
                  "resolution7ftSteady", "damping7ft", "hingeDamping7ft",
                  "materialDamping7ft", "tapes7ft",
                  "tolerance7ftLong",
@@ -3487,7 +3510,8 @@ BREATHING_STUDIES = ("domain7ftLong", "damping7ftLong", "resolution7ftHeld",
                      "edgeLength7ftTutorialTo80", "markers7ftTutorial",
                      "domain7ftTutorial", "timeStep7ftTutorial",
                      "resolution7ftUntil2Long", "resolution7ftMarkerHalf",
-                     "resolutionT10Skirt", "payloadT10SkirtLong",
+                     "numerics7ftMarkerHalf", "resolutionT10Skirt",
+                     "payloadT10SkirtLong",
                      "turbulence7ftConverged")
 
 

@@ -396,8 +396,9 @@ void Foam::ibForcing::writeInfo(Ostream& os) const
     {
         os  << spacingCells_ << " local cell size, min ";
     }
-    os  << spacing_ << " m), kernel " << kernelName_ << ", " << forcingIterations_
-        << " forcing iterations, " << (noSlip_ ? "noSlip" : "free");
+    os  << spacing_ << " m), kernel " << kernelName_ << ", "
+        << forcingIterations_ << " forcing iterations, "
+        << (noSlip_ ? "noSlip" : "free");
 }
 
 
