@@ -334,8 +334,7 @@ void Foam::interfaceQuasiNewton::readState(const dictionary& dict)
         pastWs = canopyCompat::readValue<List<List<scalarField>>>(dict, "quasiNewtonWs");
     }
     bool fits =
-        pastV.size() == pastW.size() && pastV.size() == pastWs.size()
-     && pastV.size() <= reuse_;
+        pastV.size() == pastW.size() && pastV.size() == pastWs.size();
     forAll(pastV, s)
     {
         fits =
@@ -347,13 +346,16 @@ void Foam::interfaceQuasiNewton::readState(const dictionary& dict)
         FatalIOErrorInFunction(dict)
             << "Entries 'quasiNewtonV', 'quasiNewtonW' and 'quasiNewtonWs'"
             << " hold " << pastV.size() << ", " << pastW.size() << " and "
-            << pastWs.size() << " time steps of"
-            << " columns that do not pair up or exceed coupling.reuse = "
-            << reuse_ << exit(FatalIOError);
+            << pastWs.size() << " time steps of columns that do not pair up"
+            << exit(FatalIOError);
     }
-    pastV_ = pastV;
-    pastW_ = pastW;
-    pastWs_ = pastWs;
+
+    // A restart with a smaller coupling.acceleration.reuse keeps the
+    // newest time steps
+    const label drop = max(pastV.size() - reuse_, 0);
+    pastV_ = SubList<List<scalarField>>(pastV, pastV.size() - drop, drop);
+    pastW_ = SubList<List<scalarField>>(pastW, pastW.size() - drop, drop);
+    pastWs_ = SubList<List<scalarField>>(pastWs, pastWs.size() - drop, drop);
     discardStep();
 }
 
