@@ -1935,6 +1935,13 @@ T10_MARKER_HALF = (PROPS, "coupling/forcing/markerSpacingCells", "0.5")
 RUNS += [ten_mapped("T10-mapped-cpd%d-markerhalf" % n, n, "the markers "
                     "half a cell apart (coupling.forcing.markerSpacingCells "
                     "0.5)", [T10_MARKER_HALF]) for n in (13, 20, 30)]
+# The T-10's levels without the hinge dashpots (issue 34 item 2: the 7 ft
+# tutorial keeps them during the first inflation only): from the inflated
+# state, whether the cloth holds without them and what they change
+RUNS += [ten_mapped("T10-mapped-cpd%d-bend0" % n, n, "without the hinge "
+                    "dashpots (fabric.bendingDamping 0)",
+                    [(PROPS, "fabric/bendingDamping", "0")])
+         for n in (13, 20)]
 # The T-10's structure resolution (issue 31 §3.3) at 13 cells across D0,
 # from rest to 80 s and read over 50-80 s as the payload sweep is: the
 # fabric's edge at the tutorial's 1.25 finest cells (1.03 m,
@@ -2754,6 +2761,14 @@ STUDIES = [
      "12 s, read over 2-12 s" % T10_FINE_SOURCE,
      [r % n for n in (13, 20, 30) for r in ("T10-mapped-cpd%d",
                                             "T10-mapped-cpd%d-markerhalf")]
+     + [T10_FINE_SOURCE]),
+    ("dashpotsT10", "T-10 at 163 kg on a guide wire, the extended skirt: "
+     "with the hinge dashpots (the tutorial, 10 000 /s) and without them, "
+     "at 13 and 20 cells across D0 with the cloth held at 0.446 m, each "
+     "level continuing %s at 80 s, to 12 s, read over 2-12 s"
+     % T10_FINE_SOURCE,
+     [r % n for n in (13, 20) for r in ("T10-mapped-cpd%d",
+                                        "T10-mapped-cpd%d-bend0")]
      + [T10_FINE_SOURCE]),
     ("resolutionT10MarkerHalf", "T-10 at 163 kg on a guide wire, the "
      "extended skirt, the markers half a cell apart: cells across D0 at "
