@@ -2428,6 +2428,21 @@ SEVEN_MARKER_HALF_RUNS += [
                                            "2.5e-3")],
         reference="7ft", steady_start=40, steady_end=80,
         extends=SEVEN_MAIN_JOB_80S.extends)]
+# ... and the main job going on from its 40 s write for 1.5 s with
+# IQN-ILS reusing the columns of 8 past steps (the tutorial's), of none
+# and of 16: whether the coupling's iterations in steady descent (2.5 a
+# step, issue 31 §5's target 2) depend on the history it reuses
+SEVEN_MARKER_HALF_RUNS += [
+    Run("7ft-cpd12-markerhalf-reuse%d-41.5s" % n, SEVEN,
+        SEVEN_MAIN_JOB_80S.label.replace(
+            "apart), to 80 s", "apart), IQN-ILS reusing %d past steps' "
+            "columns, to 41.5 s" % n).replace("40-80 s", "40-41.5 s"),
+        SEVEN_MAIN_JOB_80S.options,
+        edits=[("system/controlDict", "endTime", "41.5"),
+               (PROPS, "coupling/acceleration/reuse", "%d" % n)],
+        reference="7ft", steady_start=40, steady_end=41.5,
+        extends=SEVEN_MAIN_JOB_80S.extends)
+    for n in (8, 0, 16)]
 RUNS += SEVEN_MARKER_HALF_RUNS
 SEVEN_CELLS_15S_RUNS |= {r.ident for r in SEVEN_MARKER_HALF_RUNS}
 SEVEN_CURRENT_RUNS |= {r.ident for r in SEVEN_MARKER_HALF_RUNS}
@@ -2580,6 +2595,11 @@ STUDIES = [
      "read over 10-40 s)",
      ["7ft-cpd12-until2-40s", "7ft-cpd18-until2-40s",
       "7ft-cpd27-until2-40s"]),
+    ("quasiNewtonReuse7ft", "7 ft canopy on the guide wire, the "
+     "tutorial as it is (12 cells across D0): IQN-ILS reusing the columns "
+     "of 8 past time steps (the tutorial's), of none and of 16, going on "
+     "from the main job's 40 s write to 41.5 s",
+     ["7ft-cpd12-markerhalf-reuse%d-41.5s" % n for n in (8, 0, 16)]),
     ("resolution7ftMarkerHalf", "7 ft canopy on the guide wire, the "
      "tutorial as it is (the hinge dashpots off from 2 s, the markers half "
      "a cell apart): cells across D0 at the canopy (box 8 D0 wide; from "
