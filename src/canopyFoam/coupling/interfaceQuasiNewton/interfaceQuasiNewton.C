@@ -50,6 +50,17 @@ Foam::scalar readFilter(const Foam::scopedEntryReader& acceleration)
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
+Foam::SubList<Foam::List<Foam::scalarField>>
+Foam::interfaceQuasiNewton::newest
+(
+    const List<List<scalarField>>& steps
+) const
+{
+    const label drop = max(steps.size() - reuse_, 0);
+    return SubList<List<scalarField>>(steps, steps.size() - drop, drop);
+}
+
+
 Foam::scalarField Foam::interfaceQuasiNewton::leastSquares
 (
     const UPtrList<const scalarField>& V,
@@ -299,10 +310,9 @@ void Foam::interfaceQuasiNewton::writeState(dictionary& dict) const
         pastW.append(List<scalarField>(W_));
         pastWs.append(List<scalarField>(Ws_));
     }
-    const label drop = max(pastV.size() - reuse_, 0);
-    dict.add("quasiNewtonV", SubList<List<scalarField>>(pastV, pastV.size() - drop, drop));
-    dict.add("quasiNewtonW", SubList<List<scalarField>>(pastW, pastW.size() - drop, drop));
-    dict.add("quasiNewtonWs", SubList<List<scalarField>>(pastWs, pastWs.size() - drop, drop));
+    dict.add("quasiNewtonV", newest(pastV));
+    dict.add("quasiNewtonW", newest(pastW));
+    dict.add("quasiNewtonWs", newest(pastWs));
 }
 
 
@@ -352,10 +362,9 @@ void Foam::interfaceQuasiNewton::readState(const dictionary& dict)
 
     // A restart with a smaller coupling.acceleration.reuse keeps the
     // newest time steps
-    const label drop = max(pastV.size() - reuse_, 0);
-    pastV_ = SubList<List<scalarField>>(pastV, pastV.size() - drop, drop);
-    pastW_ = SubList<List<scalarField>>(pastW, pastW.size() - drop, drop);
-    pastWs_ = SubList<List<scalarField>>(pastWs, pastWs.size() - drop, drop);
+    pastV_ = newest(pastV);
+    pastW_ = newest(pastW);
+    pastWs_ = newest(pastWs);
     discardStep();
 }
 
