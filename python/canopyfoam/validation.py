@@ -2407,6 +2407,16 @@ SEVEN_MARKER_HALF_RUNS = [
         ["-cellsPerDiameter", "%d" % n], reference="7ft", steady_start=10,
         steady_end=40)
     for n in (12, 18, 27)] + [
+    # ... and 40 cells across D0 (issue 31 §3.2's finest level) on the
+    # narrow refinement (NARROW_EDIT: the finest box 1.6 D0 wide, 0.86 M
+    # cells instead of 1.59 M; on the guide wire the canopy does not swing
+    # out of it, study narrowRefinement7ft)
+    Run("7ft-cpd40-narrow-markerhalf-40s", SEVEN, "box 8 D0 wide, 40 "
+        "cells across D0 on the narrow refinement (the finest box 1.6 D0 "
+        "wide), the tutorial as it is (the hinge dashpots off from 2 s, the "
+        "markers half a cell apart), to 40 s; interval 10-40 s",
+        ["-cellsPerDiameter", "40"], edits=[NARROW_EDIT], reference="7ft",
+        steady_start=10, steady_end=40)] + [
     # ... and the main job with half its time step, and with its
     # coupling's tolerance halved and doubled (study numerics7ftMarkerHalf)
     Run("7ft-cpd12-markerhalf-%s-40s" % name, SEVEN, "box 8 D0 wide, 12 "
@@ -2617,7 +2627,8 @@ STUDIES = [
      "tutorial as it is (the hinge dashpots off from 2 s, the markers half "
      "a cell apart): cells across D0 at the canopy (box 8 D0 wide; from "
      "rest to 40 s, read over 10-40 s)",
-     ["7ft-cpd%d-markerhalf-40s" % n for n in (12, 18, 27)]),
+     ["7ft-cpd%d-markerhalf-40s" % n for n in (12, 18, 27)]
+     + ["7ft-cpd40-narrow-markerhalf-40s"]),
     ("numerics7ftMarkerHalf", "7 ft canopy on the guide wire, the "
      "tutorial as it is (12 cells across D0, the markers half a cell "
      "apart): the time step (maxCo 0.5 and maxDeltaT 0.01 against 0.25 "
