@@ -156,7 +156,9 @@ Foam::interfaceQuasiNewton::interfaceQuasiNewton
     previousOutput_(),
     previousSecondary_(),
     columnsUsed_(0),
-    columnsDropped_(0)
+    columnsDropped_(0),
+    firstResidual_(0),
+    pastDropped_(false)
 {}
 
 
@@ -224,6 +226,22 @@ void Foam::interfaceQuasiNewton::relax
 )
 {
     const scalarField r(target - x);
+    const scalar residual = Foam::sqrt(sum(r*r));
+    pastDropped_ = false;
+
+    if (previousResidual_.size() != r.size())
+    {
+        firstResidual_ = residual;
+    }
+    else if (residual > firstResidual_ && pastV_.size())
+    {
+        // The update fitted to the past steps did worse than none: their
+        // columns no longer describe the map
+        pastV_.clear();
+        pastW_.clear();
+        pastWs_.clear();
+        pastDropped_ = true;
+    }
 
     if (previousResidual_.size() == r.size())
     {
@@ -377,7 +395,13 @@ Foam::string Foam::interfaceQuasiNewton::describe() const
     }
     return
         "quasi-Newton columns " + Foam::name(columnsUsed_)
-      + " (" + Foam::name(columnsDropped_) + " filtered)";
+      + " (" + Foam::name(columnsDropped_) + " filtered"
+      + (
+            pastDropped_
+          ? string("; the past steps' dropped: the residual rose above the "
+                   "step's first)")
+          : string(")")
+        );
 }
 
 
