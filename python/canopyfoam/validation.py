@@ -7345,23 +7345,22 @@ KERNEL_FILTER_NOTES += [
 
 
 def resolution_cells_lines():
-    """The section on the 7 ft tutorial's resolution as it is (study
-    resolution7ftCells): each level's numbers, the converged C_D0 with its
-    GCI, the main job's error against it and the handbook's range, from the
-    committed records."""
-    study = "resolution7ftCells"
+    """The section on the 7 ft tutorial's resolution as it is (the study
+    the 7 ft reference names, report.py's convergedStudy): each level's
+    numbers, the converged C_D0 with its GCI, the main job's error against
+    it and the handbook's range, from the committed records."""
+    study = rep.REFERENCES["7ft"]["convergedStudy"]
+    titles = dict((st[0], st[1]) for st in STUDIES)
     ids = dict((st[0], st[2]) for st in STUDIES).get(study)
     if ids is None or any(i not in RUN_BY_ID for i in ids):
         return []
     md = ["## The 7 ft canopy's resolution on the tutorial as it is", "",
-          "Study %s: the tutorial as it is (the load from the cells, the "
-          "stabiliser's balance seen through the kernel, the cloth's edge "
-          "1.25 finest cells at every level, so that the structure's "
-          "resolution follows the air's), 12, 18 (the main job), 27 and 40 "
-          "cells across D0, each from rest to 15 s and read over 10-15 s as "
-          "the main job is. `bin/canopy-validate run <id>` for each run; "
-          "`bin/canopy-validate converged %s` prints the GCI." % (study,
-                                                                 study), "",
+          "Study %s (the levels the 7 ft summaries compare with, report.py's "
+          "convergedStudy): %s; the cloth's edge is 1.25 finest cells at "
+          "every level, so that the structure's resolution follows the "
+          "air's. `bin/canopy-validate run <id>` for each run; "
+          "`bin/canopy-validate converged %s` prints the GCI."
+          % (study, titles[study], study), "",
           "| run | cells across D0 | cells | descent [m/s] | C_D0 | Dp/D0 "
           "| it./step | wall time [min] |",
           "|---|---|---|---|---|---|---|---|"]
