@@ -7905,6 +7905,38 @@ DASHPOTS_T10_PROSE = [
 
 # What the markers half a cell apart do to the T-10 tutorial's cloths
 # (study markersT10Tutorial)
+# What the T-10's cloths do with their markers half a cell apart on the
+# 7 ft tutorial's coupling (studies markersT10Kernel and
+# resolutionT10KernelMarkerHalf)
+MARKERS_T10_KERNEL_PROSE = [
+    "On the 7 ft tutorial's coupling (the load taken from the cells, the "
+    "stabiliser's balance seen through the IB kernel) the T-10 "
+    "tutorial's own cloth (1.03 m, 1.25 cells at 13 cells across D0) "
+    "holds with its markers half a cell apart, where on its own coupling "
+    "(each marker's own force) it closed and ran away at 47.9 s: from "
+    "rest to 80 s in 3.3 minutes on 2 ranks at 1.22 coupling iterations "
+    "a step (at most 6), over 50-80 s it descends at 6.37 ± 0.11 m/s, "
+    "C_D0 0.755, Dp/D0 0.797, against the tutorial's 6.74 ± 0.21 m/s, "
+    "0.675 and 0.768: +12 % in C_D0, beyond the pair's combined ±7.0 %. "
+    "Taken from the cells, each marker's force is spread over the cells "
+    "it forces before it loads the cloth, so four markers on a triangle "
+    "no longer load it with patterns finer than the cloth. Whether the "
+    "T-10 tutorial moves to this coupling with its markers half a cell "
+    "apart waits for the 30-cell level of study "
+    "resolutionT10KernelMarkerHalf.", ""]
+RESOLUTION_T10_KERNEL_MARKER_HALF_PROSE = [
+    "With the markers half a cell apart on the 7 ft tutorial's coupling "
+    "the mapped levels give C_D0 0.803 and 0.722 at 13 and 20 cells "
+    "across D0 (6.18 ± 0.11 and 6.52 ± 0.07 m/s, Dp/D0 0.775 and 0.765), "
+    "against 0.8125 and 0.7484 with the markers a cell apart (study "
+    "resolutionT10Kernel): -1.1 % and -3.5 %, at the same 1.19 coupling "
+    "iterations a step, where on each marker's own force half a cell "
+    "moved the 20-cell level by -5.2 % and doubled its iterations (study "
+    "markersT10). Both levels still slow across their window (drifts "
+    "-0.32 and -0.20 m/s over 2-12 s), as the levels with the markers a "
+    "cell apart do. The 30-cell level (about an hour on 2 ranks) is "
+    "still to run.", ""]
+
 MARKERS_T10_TUTORIAL_PROSE = [
     "At 13 cells across D0 from rest to 80 s, on the T-10 tutorial's "
     "coupling (each marker's own force as the cloth's load, the "
@@ -7946,6 +7978,7 @@ TUTORIAL_STUDY_PROSE = {
     "markersT10": MARKERS_T10_PROSE,
     "dashpotsT10": DASHPOTS_T10_PROSE,
     "markersT10Tutorial": MARKERS_T10_TUTORIAL_PROSE,
+    "markersT10Kernel": MARKERS_T10_KERNEL_PROSE,
 }
 
 
@@ -8618,7 +8651,9 @@ def write_report():
             md += start_transient_lines(
                 levels, 1.0, "Each level's descent from the mapped start:")
             md += {"resolutionT10Mapped": MAPPED_T10_PROSE,
-                   "resolutionT10Kernel": T10_KERNEL_PROSE}.get(name, [])
+                   "resolutionT10Kernel": T10_KERNEL_PROSE,
+                   "resolutionT10KernelMarkerHalf":
+                   RESOLUTION_T10_KERNEL_MARKER_HALF_PROSE}.get(name, [])
         if name == "timeStepT10Mapped":
             md += window_change_lines(results, "The time step halved, "
                                       "over 2-12 s")
