@@ -7165,12 +7165,18 @@ MARKER_HALF_PROSE = [
     "cell apart the two levels were 3.3 % apart (0.865, 0.893). So with "
     "the markers converged the 12-cell main job lies 9 % below the "
     "18-cell level, outside issue 31's 5 %, and the 18-cell level "
-    "breathes again (10 cm against 6). The 27-cell level (about 3 "
-    "hours on 2 ranks from rest, 4-6 minutes of wall time a simulated "
-    "second) stands stopped part-way, to be continued (`bin/"
-    "canopy-validate run --continue 7ft-cpd27-markerhalf-40s`): it "
-    "decides whether the levels converge and where. The main job's time "
-    "step and coupling tolerance are in study numerics7ftMarkerHalf.", ""]
+    "breathes again (10 cm against 6). The 27-cell level (about 3.5 "
+    "hours on 2 ranks from rest, 5-6 minutes of wall time a simulated "
+    "second at 2.1-2.4 coupling iterations a step) stands stopped at "
+    "21.25 s, to be continued (`bin/canopy-validate run --continue "
+    "7ft-cpd27-markerhalf-40s`): it decides whether the levels converge "
+    "and where. Its 5 s means so far, 5.51, 5.50 and 5.53 m/s over 10-15, "
+    "15-20 and 20-21.25 s, lie between the 12-cell level's (5.51, 5.74) "
+    "and the 18-cell level's (5.38, 5.40). The 40-cell level "
+    "(7ft-cpd40-narrow-markerhalf-40s, the finest box 1.6 D0 wide, 0.86 "
+    "M cells, about 16 400 steps at about 1.8 s a step: some 8 hours on "
+    "2 ranks) is defined but not run. The main job's time step and "
+    "coupling tolerance are in study numerics7ftMarkerHalf.", ""]
 
 # What the three cloths show run on to 80 s (study
 # edgeLength7ftTutorialTo80)
