@@ -5507,7 +5507,10 @@ STUDY_CAVEATS = {
     "resolution7ftUndampedContinued": "its levels (12, 18 and 27 cells "
     "across D0) continue the damped runs' inflated canopies at 15 s "
     "without the hinge dashpots, as the tutorial descends after 2 s, and "
-    "are read over 3-8 s of the continuation",
+    "are read over 3-8 s of the continuation; their markers are a cell "
+    "apart, where the tutorial's are half a cell apart (study "
+    "resolution7ftMarkerHalf restates the value for the tutorial as it "
+    "is)",
     "resolution7ft": "its runs are read over 5-12 s: on 18 cells that "
     "stands for the steady descent (C_D0 0.674 over 5-12 s, 0.684 over "
     "30-43.9 s in 7ft-cpd18-45s), on 12 cells it is a transient (the "
@@ -7388,11 +7391,11 @@ def resolution_cells_lines():
         return []
     md = ["## The 7 ft canopy's resolution on the tutorial as it is", "",
           "Study %s (the levels the 7 ft summaries compare with, report.py's "
-          "convergedStudy): %s; the cloth's edge is 1.25 finest cells at "
-          "every level, so that the structure's resolution follows the "
-          "air's. `bin/canopy-validate run <id>` for each run; "
-          "`bin/canopy-validate converged %s` prints the GCI."
-          % (study, titles[study], study), "",
+          "convergedStudy): %s. `bin/canopy-validate run <id>` for each "
+          "run; `bin/canopy-validate converged %s` prints the GCI.%s"
+          % (study, titles[study], study,
+             " Its caveat: %s." % study_caveat(study)
+             if study_caveat(study) else ""), "",
           "| run | cells across D0 | cells | descent [m/s] | C_D0 | Dp/D0 "
           "| it./step | wall time [min] |",
           "|---|---|---|---|---|---|---|---|"]
