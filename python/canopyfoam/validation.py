@@ -7912,8 +7912,6 @@ DASHPOTS_T10_PROSE = [
     "a run from rest with them off after the inflation shows the "
     "inflation and the descent hold.", ""]
 
-# What the markers half a cell apart do to the T-10 tutorial's cloths
-# (study markersT10Tutorial)
 # What the T-10's cloths do with their markers half a cell apart on the
 # 7 ft tutorial's coupling (studies markersT10Kernel and
 # resolutionT10KernelMarkerHalf)
@@ -7946,6 +7944,8 @@ RESOLUTION_T10_KERNEL_MARKER_HALF_PROSE = [
     "cell apart do. The 30-cell level (about an hour on 2 ranks) is "
     "still to run.", ""]
 
+# What the markers half a cell apart do to the T-10 tutorial's cloths
+# (study markersT10Tutorial)
 MARKERS_T10_TUTORIAL_PROSE = [
     "At 13 cells across D0 from rest to 80 s, on the T-10 tutorial's "
     "coupling (each marker's own force as the cloth's load, the "

@@ -617,11 +617,7 @@ int main(int argc, char *argv[])
                 break;
             }
             iqn.relax(x, target);
-            if
-            (
-                !dropAt
-             && iqn.describe().find("past steps' dropped") != std::string::npos
-            )
+            if (!dropAt && iqn.pastDropped())
             {
                 dropAt = k;
             }

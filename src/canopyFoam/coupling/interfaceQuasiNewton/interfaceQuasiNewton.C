@@ -231,20 +231,20 @@ void Foam::interfaceQuasiNewton::relax
 
     if (previousResidual_.size() != r.size())
     {
+        // This time step's first iteration
         firstResidual_ = residual;
     }
-    else if (residual > firstResidual_ && pastV_.size())
+    else
     {
-        // The update fitted to the past steps did worse than none: their
-        // columns no longer describe the map
-        pastV_.clear();
-        pastW_.clear();
-        pastWs_.clear();
-        pastDropped_ = true;
-    }
-
-    if (previousResidual_.size() == r.size())
-    {
+        if (residual > firstResidual_ && pastV_.size())
+        {
+            // The update fitted to the past steps did worse than none:
+            // their columns no longer describe the map
+            pastV_.clear();
+            pastW_.clear();
+            pastWs_.clear();
+            pastDropped_ = true;
+        }
         V_.append(scalarField(r - previousResidual_));
         W_.append(scalarField(target - previousOutput_));
         Ws_.append
