@@ -90,7 +90,9 @@ def main_job(case_dir, wall):
 
 
 def step_costs(log, t0, t1):
-    """Wall seconds per time step over steps that end in [t0, t1]."""
+    """Wall seconds per time step over the steps of the solver log (the
+    last part of a continued run) that end in [t0, t1]; their count and the
+    first and last step's time."""
     times, clocks = [], []
     t = None
     with open(log, errors="replace") as f:
@@ -103,8 +105,9 @@ def step_costs(log, t0, t1):
                 clocks.append(float(m.group(1)))
     sel = [i for i in range(1, len(times)) if t0 <= times[i] <= t1]
     if not sel:
-        return None, 0
-    return (clocks[sel[-1]] - clocks[sel[0] - 1]) / len(sel), len(sel)
+        return None, 0, None, None
+    return ((clocks[sel[-1]] - clocks[sel[0] - 1]) / len(sel), len(sel),
+            times[sel[0]], times[sel[-1]])
 
 
 def levels(study=STUDY):
@@ -115,13 +118,14 @@ def levels(study=STUDY):
         n = val.cells_per_diameter(run)
         log = val.solver_log(run.case_dir)
         if val.run_state(run) == "complete":
-            cost, steps = step_costs(log, t0, t1)
+            cost, steps, first, last = step_costs(log, t0, t1)
             series = rep.load_case(run.case_dir)
             m = (series.t >= t0) & (series.t <= t1)
             its = series.column("coupling_iterations")[m].mean()
             cells = val.cell_count(run.case_dir)
-            print("# %s: %d cells, %d steps in %g-%g s"
-                  % (ident, cells, steps, t0, t1))
+            print("# %s: %d cells, cost per step over the solver log's %d "
+                  "steps in %.4g-%.4g s; iterations over %g-%g s"
+                  % (ident, cells, steps, first, last, t0, t1))
         else:
             record, why = val.archive.load(val.ARCHIVE_DIR, run)
             if record is None or not record["complete"]:
