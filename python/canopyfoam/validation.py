@@ -1981,6 +1981,18 @@ RUNS += [ten("T10-skirt-cpd13-m163-kernel-markerhalf", "163 kg on a guide "
              ["-cellsPerDiameter", "13"],
              edits=[T10_CELL_REACTION, T10_KERNEL_FILTER, T10_MARKER_HALF],
              start=50, end=80)]
+# ... and the payload sweep on that coupling (study payloadT10KernelMarkerHalf)
+RUNS += [ten("T10-skirt-cpd13-m%d-kernel-markerhalf" % m, "%d kg on a guide "
+             "wire, the extended skirt, box 8 D0 wide, 13 cells across D0, "
+             "the load taken from the cells and the stabiliser's balance "
+             "seen through the IB kernel (coupling.load.reaction cells, "
+             "addedMass.filter kernel), the markers half a cell apart "
+             "(coupling.forcing.markerSpacingCells 0.5)" % m,
+             ["-cellsPerDiameter", "13"],
+             edits=[(PROPS, "payload/mass", "%d" % m), T10_CELL_REACTION,
+                    T10_KERNEL_FILTER, T10_MARKER_HALF],
+             start=50, end=80)
+         for m in (100, 300, 600)]
 RUNS += [ten_mapped("T10-mapped-cpd%d-kernel-markerhalf" % n, n, "the load "
                     "taken from the cells and the stabiliser's balance seen "
                     "through the IB kernel (coupling.load.reaction cells, "
@@ -2850,6 +2862,12 @@ STUDIES = [
      "force with the markers a cell and half a cell apart",
      ["T10-skirt-cpd13-m163", "T10-skirt-cpd13-m163-markerhalf",
       "T10-skirt-cpd13-m163-kernel-markerhalf"]),
+    ("payloadT10KernelMarkerHalf", "T-10 on a guide wire, the extended "
+     "skirt, on the 7 ft tutorial's coupling with the markers half a cell "
+     "apart: descent against payload (the tutorial's cloth from rest, 13 "
+     "cells across D0, box 8 D0 wide, to 80 s, read over 50-80 s)",
+     ["T10-skirt-cpd13-m%d-kernel-markerhalf" % m
+      for m in (100, 163, 300, 600)]),
     ("resolutionT10KernelMarkerHalf", "T-10 at 163 kg on a guide wire, the "
      "extended skirt, on the 7 ft tutorial's coupling with the markers half "
      "a cell apart: cells across D0 at the canopy with the cloth held at "
