@@ -1972,33 +1972,24 @@ RUNS += [ten("T10-skirt-cpd13%s-markerhalf" % name, "163 kg on a guide "
 # on the 7 ft tutorial's coupling, whose load from the cells and the
 # stabiliser's kernel filter spread each marker's force over the cells
 # it forces (study markersT10Kernel)
-RUNS += [ten("T10-skirt-cpd13-m163-kernel-markerhalf", "163 kg on a guide "
-             "wire, the extended skirt, box 8 D0 wide, 13 cells across D0, "
-             "the load taken from the cells and the stabiliser's balance "
-             "seen through the IB kernel (coupling.load.reaction cells, "
-             "addedMass.filter kernel), the markers half a cell apart "
-             "(coupling.forcing.markerSpacingCells 0.5)",
-             ["-cellsPerDiameter", "13"],
-             edits=[T10_CELL_REACTION, T10_KERNEL_FILTER, T10_MARKER_HALF],
-             start=50, end=80)]
-# ... and the payload sweep on that coupling (study payloadT10KernelMarkerHalf)
+T10_KERNEL_MARKER_HALF_LABEL = (
+    "the load taken from the cells and the stabiliser's balance seen "
+    "through the IB kernel (coupling.load.reaction cells, addedMass.filter "
+    "kernel), the markers half a cell apart (coupling.forcing."
+    "markerSpacingCells 0.5)")
+T10_KERNEL_MARKER_HALF = [T10_CELL_REACTION, T10_KERNEL_FILTER,
+                          T10_MARKER_HALF]
+# (ten() sets the rated 163 kg; the sweep's other payloads edit it: study
+# payloadT10KernelMarkerHalf)
 RUNS += [ten("T10-skirt-cpd13-m%d-kernel-markerhalf" % m, "%d kg on a guide "
              "wire, the extended skirt, box 8 D0 wide, 13 cells across D0, "
-             "the load taken from the cells and the stabiliser's balance "
-             "seen through the IB kernel (coupling.load.reaction cells, "
-             "addedMass.filter kernel), the markers half a cell apart "
-             "(coupling.forcing.markerSpacingCells 0.5)" % m,
+             "%s" % (m, T10_KERNEL_MARKER_HALF_LABEL),
              ["-cellsPerDiameter", "13"],
-             edits=[(PROPS, "payload/mass", "%d" % m), T10_CELL_REACTION,
-                    T10_KERNEL_FILTER, T10_MARKER_HALF],
-             start=50, end=80)
-         for m in (100, 300, 600)]
-RUNS += [ten_mapped("T10-mapped-cpd%d-kernel-markerhalf" % n, n, "the load "
-                    "taken from the cells and the stabiliser's balance seen "
-                    "through the IB kernel (coupling.load.reaction cells, "
-                    "addedMass.filter kernel), the markers half a cell "
-                    "apart (coupling.forcing.markerSpacingCells 0.5)",
-                    [T10_CELL_REACTION, T10_KERNEL_FILTER, T10_MARKER_HALF])
+             edits=([] if m == 163 else [(PROPS, "payload/mass", "%d" % m)])
+             + T10_KERNEL_MARKER_HALF, start=50, end=80)
+         for m in (100, 163, 300, 600)]
+RUNS += [ten_mapped("T10-mapped-cpd%d-kernel-markerhalf" % n, n,
+                    T10_KERNEL_MARKER_HALF_LABEL, T10_KERNEL_MARKER_HALF)
          for n in (13, 20, 30)]
 # Free flight over a long window (issue 34 item 5): the suspension's angle
 # to the vertical, the swing's period and the glide, the T-10 at 13 cells
