@@ -2432,6 +2432,14 @@ SEVEN_MARKER_HALF_RUNS = [
         ["-cellsPerDiameter", "%d" % n], reference="7ft", steady_start=10,
         steady_end=40)
     for n in (12, 18, 27)] + [
+    # ... and 13 cells across D0 (issue 31 §4): the main job's 12 cells
+    # lie 5.05 % below the 27-cell level and 18 cells take 64 min, so the
+    # cheapest level between them is a candidate for the main job
+    Run("7ft-cpd13-markerhalf-40s", SEVEN, "box 8 D0 wide, 13 cells "
+        "across D0, the tutorial as it is (the hinge dashpots off from 2 s, "
+        "the markers half a cell apart), to 40 s; interval 10-40 s",
+        ["-cellsPerDiameter", "13"], reference="7ft", steady_start=10,
+        steady_end=40)] + [
     # ... and 40 cells across D0 (issue 31 §3.2's finest level) on the
     # narrow refinement (NARROW_EDIT: the finest box 1.6 D0 wide, 0.86 M
     # cells instead of 1.59 M; on the guide wire the canopy does not swing
@@ -2654,6 +2662,11 @@ STUDIES = [
      "rest to 40 s, read over 10-40 s)",
      ["7ft-cpd%d-markerhalf-40s" % n for n in (12, 18, 27)]
      + ["7ft-cpd40-narrow-markerhalf-40s"]),
+    ("mainJobLevel7ft", "7 ft canopy on the guide wire, the tutorial as it "
+     "is: the main job's level (issue 31 §4), 12 and 13 cells across D0 "
+     "(box 8 D0 wide; from rest to 40 s, read over 10-40 s) against the "
+     "converged value of resolution7ftMarkerHalf",
+     ["7ft-cpd%d-markerhalf-40s" % n for n in (12, 13)]),
     ("numerics7ftMarkerHalf", "7 ft canopy on the guide wire, the "
      "tutorial as it is (12 cells across D0, the markers half a cell "
      "apart): the time step (maxCo 0.5 and maxDeltaT 0.01 against 0.25 "
