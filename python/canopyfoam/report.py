@@ -120,7 +120,7 @@ REFERENCES = {
         "payloadRange": [100.0, 600.0],
         "breathingPeriodExperiment": 2.3,
         "breathingPeriodSimulation": 2.0,
-        "convergedStudy": "resolutionT10Mapped",
+        "convergedStudy": "resolutionT10KernelMarkerHalf",
     },
     "G11third": {
         "title": "1/3-scale G-11 flat circular canopy, D0 10.1 m, 30 lines "
