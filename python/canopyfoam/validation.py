@@ -2554,7 +2554,12 @@ T10_CURRENT_RUNS += [
         "wide, 13 cells across D0, the tutorial with its hinge dashpots off "
         "from 10 s (fabric.bendingDampingUntil 10)", CPD13,
         edits=[(PROPS, "fabric/bendingDampingUntil", "10")], start=80,
-        end=120)]
+        end=120),
+    ten("T10-cpd13-free-m163-until10", "163 kg in free flight, box 8 D0 "
+        "wide, 13 cells across D0, the tutorial with its hinge dashpots off "
+        "from 10 s (fabric.bendingDampingUntil 10)", CPD13,
+        edits=[(PROPS, "fabric/bendingDampingUntil", "10")], guided=False,
+        start=15, end=60)]
 RUNS += T10_CURRENT_RUNS
 # The C-9 on the T-10 tutorial's coupling (the 7 ft tutorial's, the
 # markers half a cell apart, Aitken's factor from 1), on the guide wire
@@ -2955,6 +2960,11 @@ STUDIES = [
      "10 s (fabric.bendingDampingUntil 10; from rest, 13 cells across D0, "
      "to 120 s, read over 80-120 s)",
      ["T10-cpd13-m163-120s", "T10-cpd13-m163-until10-120s"]),
+    ("dashpotsT10Free", "T-10 at 163 kg in free flight, the tutorial as it "
+     "is: the hinge dashpots throughout (the tutorial) and off from 10 s "
+     "(fabric.bendingDampingUntil 10; from rest, 13 cells across D0, to 60 "
+     "s, read over 15-60 s)",
+     ["T10-cpd13-free-m163", "T10-cpd13-free-m163-until10"]),
     ("couplingC9", "C-9 at 100 kg on a guide wire: its tutorial's coupling "
      "against the T-10 tutorial's (13 cells across D0, to 120 s, read over "
      "60-120 s)", ["C9-cpd13-120s", "C9-cpd13-coupling7ft-120s"]),
@@ -3810,7 +3820,7 @@ def breathing_band_lines(results):
 # Studies whose report gets the swing and glide table and the
 # suspension's angle over time (issue 34 item 5)
 SWING_STUDIES = ("freeFlight", "departureT10", "pivotT10", "crossResolution",
-                 "freeT10Tutorial")
+                 "freeT10Tutorial", "dashpotsT10Free")
 
 # Published oscillation of each parachute's class: Knacke, Parachute
 # Recovery Systems Design Manual, NWC TP 6575 (1991), Table 5-1
