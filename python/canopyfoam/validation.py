@@ -2405,9 +2405,10 @@ SEVEN_RESTORED = (SEVEN_DASHPOTS_THROUGHOUT + SEVEN_EIGHTEEN_CELLS
 
 
 def _sets(run, entry):
-    """Whether a run sets a dictionary entry (by an edit or, for the
-    resolution, by its Allrun option)."""
-    return (any(e[1] == entry for e in run.edits)
+    """Whether a run sets a dictionary entry, or the dictionary that holds
+    it, by an edit (or, for the resolution, by its Allrun option)."""
+    return (any(e[1] == entry or entry.startswith(e[1] + "/")
+                for e in run.edits)
             or (entry == "cellsPerDiameter"
                 and "-cellsPerDiameter" in run.options))
 
@@ -2514,18 +2515,10 @@ T10_EARLIER_COUPLING = [
     (PROPS, "coupling/forcing/markerSpacingCells", REMOVE),
     (PROPS, "coupling/load/reaction", REMOVE),
     (PROPS, "coupling/addedMass/filter", "triangleMean")]
-
-
-def _sets_within(run, entry):
-    """Whether a run sets a dictionary entry or a dictionary above it."""
-    return any(e[1] == entry or entry.startswith(e[1] + "/")
-               for e in run.edits)
-
-
 for _run in RUNS:
     if _run.tutorial == T10:
         _run.edits = _run.edits + [e for e in T10_EARLIER_COUPLING
-                                   if not _sets_within(_run, e[1])]
+                                   if not _sets(_run, e[1])]
 # The T-10 tutorial as it is: its default (100 kg in free flight to 20 s),
 # 163 kg in free flight to 60 s (issue 34 item 5: on the earlier coupling
 # the payload swung from about 20 s until the parachute tumbled), and the
