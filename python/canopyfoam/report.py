@@ -45,6 +45,9 @@ Definitions used throughout (stated in the summary too):
 - the load on the cloth over the interval: canopy.dat's force as a mean
   vector with its spread and 95 % intervals, and the moment about the
   payload of the load canopy.h5 holds (load_moment.py states it).
+- when the run wrote its structure every time step, the cloth's and the
+  lines' velocity change from one step to the next over the interval
+  (step_changes.py states it).
 
 Only numpy is needed to analyse the time series; the shape needs h5py and
 is reported as not read without it (or without canopy.h5); matplotlib is
@@ -60,6 +63,7 @@ import sys
 import numpy as np
 
 from . import shape as canopy_shape
+from . import step_changes
 from . import load_moment
 
 COLUMNS = (
@@ -848,6 +852,11 @@ def analyse(case_dir, fraction=None, steady_start=None, diameter=None,
         form = dict(canopy_shape.analyse(case_dir, t0, t1), available=True)
     except canopy_shape.ShapeError as e:
         form = {"available": False, "note": str(e)}
+    try:
+        changes = dict(step_changes.analyse(case_dir, t0, t1, t),
+                       available=True)
+    except step_changes.StepChangeError as e:
+        changes = {"available": False, "note": str(e)}
     load = canopy_load(case_dir, ts,
                        series.columns("force_x", "force_y", "force_z")[m],
                        t0, t1)
@@ -886,6 +895,7 @@ def analyse(case_dir, fraction=None, steady_start=None, diameter=None,
         "breathingBand": b_band,
         "swing": swing,
         "shape": form,
+        "stepChanges": changes,
         "dragCoefficient": cd,
         "coupling": {
             "meanIterations": float(np.mean(iterations)),
