@@ -34,6 +34,8 @@ Definitions used throughout (stated in the summary too):
   is reported as not resolved; the same above f = 0.1 V / Dp (Strouhal
   number f Dp / V >= 0.1, Dp the mean projected diameter), which leaves
   out the descent's slow swings, with the Strouhal number of its peak;
+  the descent speed's spectrum the same way in the same band (its peak
+  frequency, Strouhal number and amplitude in m/s);
 - C_D from the force balance at terminal velocity, W = 1/2 rho V^2 S0 C_D,
   with W = total mass |g|, V the mean descent speed over the interval and
   S0 = pi D0^2 / 4 the nominal area; and C_D from the mean pressure force
@@ -544,10 +546,11 @@ def spectrum(t, y):
     return np.fft.rfftfreq(n, dt), amplitude, 1.0 / (n * dt)
 
 
-def breathing(t, diameter, f_min=0.0):
+def breathing(t, diameter, f_min=0.0, quantity="the diameter"):
     """The breathing frequency of the projected diameter over [t0, t1]:
     the spectrum's largest bin (bin 0 excluded), or with f_min > 0 its
-    largest local maximum at or above f_min [Hz].
+    largest local maximum at or above f_min [Hz]. Any other series (the
+    descent speed) the same way, quantity naming it in the note.
 
     Returns a dict: frequency (refined, or None when not resolved),
     binFrequency (the peak bin's centre), resolution (bin width df),
@@ -567,7 +570,7 @@ def breathing(t, diameter, f_min=0.0):
     d = np.asarray(diameter, dtype=float)
     scale = max(abs(float(np.mean(d))), 1e-300)
     if len(a) < 3 or float(np.max(a[1:])) <= 1e-12 * scale:
-        result["note"] = "no oscillation of the diameter"
+        result["note"] = "no oscillation of %s" % quantity
         return result
     first = max(1, int(math.ceil(f_min / df - 1e-9)))
     if first >= len(a):
@@ -609,15 +612,18 @@ def breathing(t, diameter, f_min=0.0):
     return result
 
 
-def breathing_band(t, diameter, speed, mean_diameter):
+def breathing_band(t, diameter, speed, mean_diameter,
+                   quantity="the diameter"):
     """The breathing in the band f Dp / V >= BREATHING_STROUHAL_MIN (Dp the
     mean projected diameter, V the mean descent speed): the breathing
     analysis above that frequency, with the Strouhal number f Dp / V of
-    the peak found. None when the parachute is not descending."""
+    the peak found (of the diameter, or of another series such as the
+    descent speed, quantity naming it). None when the parachute is not
+    descending."""
     if not speed > 0.0 or not mean_diameter > 0.0:
         return None
     f_min = BREATHING_STROUHAL_MIN * speed / mean_diameter
-    b = {k: v for k, v in breathing(t, diameter, f_min).items()
+    b = {k: v for k, v in breathing(t, diameter, f_min, quantity).items()
          if not k.startswith("_")}
     b["fMin"] = f_min
     b["strouhalMin"] = BREATHING_STROUHAL_MIN
@@ -831,6 +837,10 @@ def analyse(case_dir, fraction=None, steady_start=None, diameter=None,
     f_stats = time_statistics(ts, drag[m])
     b = breathing(ts, D[m])
     b_band = breathing_band(ts, D[m], v_stats["mean"], d_stats["mean"])
+    # the descent speed's spectrum in the same band: the breathing as the
+    # payload feels it
+    v_band = breathing_band(ts, V[m], v_stats["mean"], d_stats["mean"],
+                            "the descent speed")
     offset = series.columns("canopy_x", "canopy_y", "canopy_z") \
         - series.columns("payload_x", "payload_y", "payload_z")
     swing = suspension_swing(ts, offset[m], ghat)
@@ -855,8 +865,8 @@ def analyse(case_dir, fraction=None, steady_start=None, diameter=None,
     try:
         changes = dict(step_changes.analyse(case_dir, t0, t1, t),
                        available=True)
-    except step_changes.StepChangeError as e:
-        changes = {"available": False, "note": str(e)}
+    except step_changes.StepChangeError:
+        changes = None      # the run did not write every step
     load = canopy_load(case_dir, ts,
                        series.columns("force_x", "force_y", "force_z")[m],
                        t0, t1)
@@ -893,9 +903,9 @@ def analyse(case_dir, fraction=None, steady_start=None, diameter=None,
         "canopyLoad": load,
         "breathing": {k: v for k, v in b.items() if not k.startswith("_")},
         "breathingBand": b_band,
+        "descentBand": v_band,
         "swing": swing,
         "shape": form,
-        "stepChanges": changes,
         "dragCoefficient": cd,
         "coupling": {
             "meanIterations": float(np.mean(iterations)),
@@ -911,6 +921,8 @@ def analyse(case_dir, fraction=None, steady_start=None, diameter=None,
         "_angle": theta,
         "_horizontal": H,
     }
+    if changes is not None:
+        report["stepChanges"] = changes
     if reference is not None:
         report["reference"] = dict(REFERENCES[reference], name=reference)
     return report
@@ -1121,6 +1133,15 @@ def format_summary(r):
     elif bb:
         add("  breathing    above St %.2g (f >= %.3g Hz): not resolved: %s"
             % (bb["strouhalMin"], bb["fMin"], bb["note"]))
+    vb = r.get("descentBand")
+    if vb and vb["resolved"]:
+        add("  descent      its spectrum above St %.2g: %.4g Hz, St = %.3g, "
+            "amplitude %.3g m/s, %.1f periods"
+            % (vb["strouhalMin"], vb["frequency"], vb["strouhal"],
+               vb["amplitude"], vb["periods"]))
+    elif vb:
+        add("  descent      its spectrum above St %.2g: not resolved: %s"
+            % (vb["strouhalMin"], vb["note"]))
     if ref and _reference_breathing(ref):
         add("     ref %-5s %s" % (ref["name"], _reference_breathing(ref)))
     if cd["weightBalance"] is None:

@@ -2552,6 +2552,13 @@ SEVEN_MARKER_HALF_RUNS += [
         edits=nylon_damping(0.02), reference="7ft", steady_start=10,
         steady_end=40)
     for n in (12, 18)]
+# ... the damped main job going on from its 40 s write to 80 s, read over
+# 40-80 s against the main job's own 40-80 s (7ft-cpd12-markerhalf-80s):
+# over 10-40 s it still slowed (drift -0.67 m/s), its approach to the
+# steady descent slower than the undamped cloth's
+SEVEN_MARKER_HALF_RUNS.append(seven_tutorial_80s(
+    [r for r in SEVEN_MARKER_HALF_RUNS
+     if r.ident == "7ft-cpd12-markerhalf-loss0.02-40s"][0]))
 RUNS += SEVEN_MARKER_HALF_RUNS
 SEVEN_CELLS_15S_RUNS |= {r.ident for r in SEVEN_MARKER_HALF_RUNS}
 SEVEN_CURRENT_RUNS |= {r.ident for r in SEVEN_MARKER_HALF_RUNS}
@@ -2793,9 +2800,11 @@ STUDIES = [
     ("damping7ftTutorial", "7 ft canopy on the guide wire, the tutorial "
      "as it is: nylon's material damping (loss factor "
      "0.02 at 2 Hz) against the tutorial's undamped cloth and lines at 12 "
-     "and 18 cells across D0, from rest to 40 s, read over 10-40 s",
+     "and 18 cells across D0, from rest to 40 s, read over 10-40 s, and "
+     "at 12 cells on to 80 s, read over 40-80 s",
      ["7ft-cpd12-markerhalf-40s", "7ft-cpd12-markerhalf-loss0.02-40s",
-      "7ft-cpd18-markerhalf-40s", "7ft-cpd18-markerhalf-loss0.02-40s"]),
+      "7ft-cpd18-markerhalf-40s", "7ft-cpd18-markerhalf-loss0.02-40s",
+      "7ft-cpd12-markerhalf-80s", "7ft-cpd12-markerhalf-loss0.02-80s"]),
     ("resolution7ftMarkerHalf", "7 ft canopy on the guide wire, the "
      "tutorial as it is (the hinge dashpots off from 2 s, the markers half "
      "a cell apart): cells across D0 at the canopy (box 8 D0 wide; from "
@@ -3841,29 +3850,41 @@ BREATHING_STUDIES = ("domain7ftLong", "damping7ftLong", "resolution7ftHeld",
                      "resolution7ftUntil2Long", "resolution7ftMarkerHalf",
                      "numerics7ftMarkerHalf", "resolutionT10Skirt",
                      "payloadT10SkirtLong",
-                     "turbulence7ftConverged")
+                     "turbulence7ftConverged", "mainJobLevel7ft",
+                     "damping7ftTutorial", "payloadT10Tutorial")
 
 
 def breathing_band_lines(results):
     """The table of each run's breathing above f Dp / V = 0.1 (report.py's
     breathing_band: the projected diameter's spectrum over the run's
     interval, its largest peak in the band, the Strouhal number f Dp / V)
-    for the runs whose records hold it."""
+    and of its descent speed's spectrum in the same band (descentBand) for
+    the runs whose records hold them."""
     rows = []
     for run, rec in results:
         b = rec and rec["analysis"] and rec["analysis"].get("breathingBand")
         if not b:
             continue
         a = rec["analysis"]
+        v = a.get("descentBand")
+        if not v:
+            descent = "—"
+        elif v["resolved"]:
+            descent = "%.3g (St %.3f; %.2g m/s)" % (
+                v["frequency"], v["strouhal"], v["amplitude"])
+        else:
+            descent = "not resolved"
         if b["resolved"]:
-            rows.append("| %s | %.3g-%.3g s | %.3g | %.3g | %.3f | %.3g | %.0f |"
+            rows.append("| %s | %.3g-%.3g s | %.3g | %.3g | %.3f | %.3g | %.0f "
+                        "| %s |"
                         % (run.ident, a["steady"]["start"], a["steady"]["end"],
                            b["fMin"], b["frequency"], b["strouhal"],
-                           b["amplitude"], b["periods"]))
+                           b["amplitude"], b["periods"], descent))
         else:
-            rows.append("| %s | %.3g-%.3g s | %.3g | not resolved: %s | | | |"
+            rows.append("| %s | %.3g-%.3g s | %.3g | not resolved: %s | | | "
+                        "| %s |"
                         % (run.ident, a["steady"]["start"], a["steady"]["end"],
-                           b["fMin"], b["note"]))
+                           b["fMin"], b["note"], descent))
     if not rows:
         return []
     return ["The breathing: the largest peak of the projected diameter's "
@@ -3871,12 +3892,16 @@ def breathing_band_lines(results):
             "or above a Strouhal number f Dp / V of 0.1 (python/canopyfoam/"
             "report.py, breathing_band: below it lie the descent's slow "
             "swings, periods of ten and more Dp / V), with its Strouhal "
-            "number. The seed's measurements: the 7 ft canopy about 2 Hz "
+            "number; beside it the descent speed's spectrum in the same "
+            "band, its largest peak (the breathing as the payload feels "
+            "it; — where the record was made before it was recorded). The "
+            "seed's measurements: the 7 ft canopy about 2 Hz "
             "(St ≈ 0.75 at the drop test's 4.27 m/s and about 1.6 m across), "
             "the T-10 a period of 2.3 s (St ≈ 0.51 at 6.7 m/s and 7.8 m).",
             "", "| run | interval | band from [Hz] | frequency [Hz] | "
-            "St = f Dp / V | amplitude [m] | periods in the interval |",
-            "|---|---|---|---|---|---|---|"] + rows + [""]
+            "St = f Dp / V | amplitude [m] | periods in the interval | "
+            "descent speed's peak [Hz] (St; amplitude) |",
+            "|---|---|---|---|---|---|---|---|"] + rows + [""]
 
 
 # Studies whose report gets the swing and glide table and the
@@ -7400,7 +7425,9 @@ MARKER_HALF_PROSE = [
     "(report.py, convergedStudy). The three levels give C_D0 0.828, 0.910 "
     "and 0.872 (5.61 ± 0.08, 5.35 ± 0.04 and 5.47 ± 0.03 m/s; Dp/D0 "
     "0.810, 0.807 and 0.803), breathing at 0.82, 1.29 and 1.33 Hz (St "
-    "0.25, 0.42 and 0.42) with 6, 10 and 14 cm, at 2.45, 2.58 and 2.23 "
+    "0.25, 0.42 and 0.42) with 6, 10 and 14 cm, and the descent speed "
+    "at the same frequencies (0.85, 1.29 and 1.33 Hz, by 0.03, 0.07 and "
+    "0.16 m/s: the payload feels the breathing), at 2.45, 2.58 and 2.23 "
     "coupling iterations a step. The 27-cell level (536 844 cells) took "
     "3.9 hours on 2 ranks, 5.4-6.4 minutes of wall time a simulated "
     "second, in parts each continued from the latest write. The 18- and "
@@ -7423,8 +7450,9 @@ MARKER_HALF_PROSE = [
     "stands above the handbook's 0.67-0.70. The 40-cell level "
     "(7ft-cpd40-narrow-markerhalf-40s, the finest box 1.6 D0 wide, 0.86 "
     "M cells, about 16 400 steps at about 1.8 s a step: some 8 hours on "
-    "2 ranks) is defined but not run; it would show whether the levels' "
-    "oscillation settles and narrow the bound. The main job's time step "
+    "2 ranks) is running in parts, each continued from the latest write "
+    "(its row above says where it stands); it will show whether the "
+    "levels' oscillation settles and narrow the bound. The main job's time step "
     "and coupling tolerance are in study numerics7ftMarkerHalf.", ""]
 
 # What the three cloths show run on to 80 s (study
@@ -8345,7 +8373,17 @@ PAYLOAD_T10_TUTORIAL_PROSE = [
     "slow, and against the converged 0.719 ± 2.8 % of its coupling's "
     "mapped levels (study resolutionT10KernelMarkerHalf, read 2-12 s "
     "after the mapping) its C_D0 is 13 % high: the tutorial's 1.03 m "
-    "cloth at 13 cells, read later in the descent.", ""]
+    "cloth at 13 cells, read later in the descent.",
+    "",
+    "Breathing (issue 34 item 4; the table above, the projected "
+    "diameter's and the descent speed's spectra over 80-120 s from St "
+    "0.1): no T-10 run breathes near the seed's period of 2.3 s (0.43 "
+    "Hz, St ≈ 0.5). At 100, 163 and 300 kg both spectra peak at the "
+    "slow wander, 0.07-0.16 Hz (St 0.12-0.17, 3-7 periods in the window: "
+    "not a breathing the window resolves), with the diameter moving by "
+    "1-2 cm and the descent by 0.03-0.07 m/s; at 600 kg the diameter's "
+    "peak is 0.36 Hz (St 0.30, 3.4 cm, 14 periods), the descent's still "
+    "the wander's 0.16 Hz. Read at 13 cells across D0 only.", ""]
 FREE_T10_TUTORIAL_PROSE = [
     "In free flight on the tutorial's coupling the T-10 holds its "
     "vertical descent much longer than on the earlier one. Its default "

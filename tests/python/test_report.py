@@ -231,6 +231,17 @@ def test_restarts_and_statistics(tmp):
     # amplitude: the Hann scaling shows aD for a tone on a bin; 0.02 bins
     # off it loses (1 - sinc-type factor) < 0.2 %, the image adds < 0.1 %
     close("breathing amplitude", b["amplitude"], AD, 0.01 * AD, "m")
+    # The descent speed's spectrum in the breathing's band (from St 0.1,
+    # f_min = 0.1 V / Dp = 0.27 Hz): its 2 Hz tone of aV, the same bin and
+    # the same bounds as the diameter's; St = fV Dp / V with Dp the mean
+    # projected diameter
+    vb = r["descentBand"]
+    close("descent band refined frequency", vb["frequency"], FV, 0.02 * df,
+          "Hz")
+    close("descent band amplitude", vb["amplitude"], AV, 0.01 * AV, "m/s")
+    close("descent band Strouhal number", vb["strouhal"],
+          vb["frequency"] * r["projectedDiameter"]["mean"]
+          / r["descentVelocity"]["mean"], 1e-12)
 
     # Drag coefficients, by hand: W = 6.02 * 9.81 = 59.0562 N,
     # S0 = pi 2.134^2 / 4 = 3.576669 m^2, q = 0.6 * 4^2 = 9.6 Pa,
@@ -306,6 +317,10 @@ def test_breathing_band():
           1e-3 * 1.5 / 4.0)
     check("breathing_band: none without descent",
           report.breathing_band(t, y, 0.0, 1.5) is None, "speed 0")
+    flat = report.breathing_band(t, [5.0] * n, 4.0, 1.5, "the descent speed")
+    check("a steady series: its name in the note", not flat["resolved"]
+          and flat["note"] == "no oscillation of the descent speed",
+          "resolved %s, note '%s'" % (flat["resolved"], flat["note"]))
 
 
 def test_not_resolved(tmp):
