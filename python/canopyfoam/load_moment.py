@@ -36,6 +36,8 @@ import os
 
 import numpy as np
 
+from . import canopy_h5
+
 PAYLOAD_GROUP = 3      # libcanopy's node group of the payload (canopy.h)
 
 
@@ -103,17 +105,10 @@ def analyse(case_dir, t0=-math.inf, t1=math.inf, stabiliser=None,
     stabiliser ({"mass": kg/m^2, "direction": "all" or "normal"}, the
     run's coupling.addedMass) also balanceMoment and fluidMoment (the
     load's less the balance's)."""
-    try:
-        import h5py
-    except ImportError:
-        raise LoadMomentError("python3-h5py is not installed (bin/setup "
-                              "installs it)")
-    path = os.path.join(case_dir, "postProcessing", "canopy", "canopy.h5")
-    if not os.path.isfile(path):
-        raise LoadMomentError("no %s" % os.path.relpath(path, case_dir))
+    path = canopy_h5.path(case_dir)
     times, forces, moments, weights, balances = [], [], [], [], []
     try:
-        with h5py.File(path, "r") as f:
+        with canopy_h5.open_file(case_dir, LoadMomentError) as f:
             groups = f["mesh/node_group"][:]
             triangles = f["mesh/triangles"][:]
             node_mass = f["mesh/node_mass"][:] if gravity is not None \

@@ -29,6 +29,8 @@ from collections import defaultdict
 
 import numpy as np
 
+from . import canopy_h5
+
 GROUP_FABRIC, GROUP_TAPE, GROUP_PAYLOAD = 0, 1, 3
 RING_EDGES = (0.0, 0.3, 0.5, 0.7, 0.85, 1.0)
 FOLDED_DEGREES = 90.0
@@ -268,23 +270,15 @@ def mean_shape(snapshots):
     return out
 
 
-def h5_path(case_dir):
-    return os.path.join(case_dir, "postProcessing", "canopy", "canopy.h5")
+h5_path = canopy_h5.path
 
 
 def read_case(case_dir, t0=-math.inf, t1=math.inf):
     """(mesh, [(time, x), ...]) from <case>/postProcessing/canopy/canopy.h5,
     the states written in [t0, t1] (none: ShapeError)."""
-    try:
-        import h5py
-    except ImportError:
-        raise ShapeError("python3-h5py is not installed (bin/setup "
-                         "installs it)")
     path = h5_path(case_dir)
-    if not os.path.isfile(path):
-        raise ShapeError("no %s" % os.path.relpath(path, case_dir))
     try:
-        with h5py.File(path, "r") as f:
+        with canopy_h5.open_file(case_dir, ShapeError) as f:
             m = f["mesh"]
             mesh = CanopyMesh(m["node_group"][:], m["triangles"][:],
                               m["springs"][:], m["spring_rest_length"][:],

@@ -24,6 +24,8 @@ import os
 
 import numpy as np
 
+from . import canopy_h5
+
 GROUP_FABRIC, GROUP_LINE = 0, 2
 
 
@@ -35,16 +37,9 @@ def read_states(case_dir, t0, t1, step_times):
     """(node_group, triangles, [(time, x, v), ...]) for the states canopy.h5
     holds in [t0, t1], at least three, consecutive time steps of the run
     (step_times: its series' times); StepChangeError otherwise."""
+    path = canopy_h5.path(case_dir)
     try:
-        import h5py
-    except ImportError:
-        raise StepChangeError("python3-h5py is not installed (bin/setup "
-                              "installs it)")
-    path = os.path.join(case_dir, "postProcessing", "canopy", "canopy.h5")
-    if not os.path.isfile(path):
-        raise StepChangeError("no %s" % os.path.relpath(path, case_dir))
-    try:
-        with h5py.File(path, "r") as f:
+        with canopy_h5.open_file(case_dir, StepChangeError) as f:
             names = []
             for name in sorted(f["steps"].keys()):
                 t = float(f["steps"][name].attrs["time"])

@@ -4530,15 +4530,21 @@ def plot_swing(name, title, runs_results):
                        label=lambda run: run.ident, title_size=9)
 
 
+def _available(results, key):
+    """(run, analysis, analysis[key]) for each run whose record holds the
+    entry key as available (the entries read from canopy.h5)."""
+    for run, rec in results:
+        r = rec and rec["analysis"]
+        entry = r and r.get(key)
+        if entry and entry.get("available"):
+            yield run, r, entry
+
+
 def shape_lines(results):
     """The table of the canopy's shape (report.analyse's "shape", from
     canopy.h5) of the runs whose records hold it."""
     rows = []
-    for run, rec in results:
-        r = rec and rec["analysis"]
-        form = r and r.get("shape")
-        if not form or not form.get("available"):
-            continue
+    for run, r, form in _available(results, "shape"):
         D0 = r["parameters"]["nominalDiameter"]["value"]
         rings = form["rings"]
         sil = form.get("silhouetteDiameter")
@@ -4581,11 +4587,7 @@ def step_change_lines(results):
     time step to the next (report.analyse's "stepChanges") of the runs
     whose records hold it (runs that wrote their structure every step)."""
     rows = []
-    for run, rec in results:
-        r = rec and rec["analysis"]
-        ch = r and r.get("stepChanges")
-        if not ch or not ch.get("available"):
-            continue
+    for run, _, ch in _available(results, "stepChanges"):
         rows.append("| %s | %s-%s s (%d states, %s s apart) | %s | %s | %s "
                     "| %s | %s | %s |" % (
                         run.ident, _f(ch["timeFirst"], "%.4g"),

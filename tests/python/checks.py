@@ -17,6 +17,16 @@ def check(name, ok, detail):
         failures.append(name)
 
 
+def refused(name, call, error, text):
+    """Check that call() raises error with text in its message."""
+    try:
+        call()
+    except error as e:
+        check(name, text in str(e), str(e))
+        return
+    check(name, False, "no error")
+
+
 def finish():
     """Print the count of failed checks and exit 1 if there are any."""
     print("%d failed" % len(failures))
