@@ -2551,7 +2551,7 @@ SEVEN_MARKER_HALF_RUNS += [
         "interval 10-40 s" % n, ["-cellsPerDiameter", "%d" % n],
         edits=nylon_damping(0.02), reference="7ft", steady_start=10,
         steady_end=40)
-    for n in (12, 18)]
+    for n in (12, 18, 27)]
 # ... the damped main job going on from its 40 s write to 80 s, read over
 # 40-80 s against the main job's own 40-80 s (7ft-cpd12-markerhalf-80s):
 # over 10-40 s it still slowed (drift -0.67 m/s), its approach to the
@@ -2805,6 +2805,12 @@ STUDIES = [
      ["7ft-cpd12-markerhalf-40s", "7ft-cpd12-markerhalf-loss0.02-40s",
       "7ft-cpd18-markerhalf-40s", "7ft-cpd18-markerhalf-loss0.02-40s",
       "7ft-cpd12-markerhalf-80s", "7ft-cpd12-markerhalf-loss0.02-80s"]),
+    ("resolution7ftDamped", "7 ft canopy on the guide wire, the tutorial "
+     "with nylon's material damping (loss factor 0.02 at 2 Hz in the cloth "
+     "and the lines; the hinge dashpots off from 2 s, the markers half a "
+     "cell apart): cells across D0 at the canopy (box 8 D0 wide; from rest "
+     "to 40 s, read over 10-40 s)",
+     ["7ft-cpd%d-markerhalf-loss0.02-40s" % n for n in (12, 18, 27)]),
     ("resolution7ftMarkerHalf", "7 ft canopy on the guide wire, the "
      "tutorial as it is (the hinge dashpots off from 2 s, the markers half "
      "a cell apart): cells across D0 at the canopy (box 8 D0 wide; from "
@@ -3838,7 +3844,8 @@ SHAPE_STUDIES = ("default7ft", "resolution7ft", "resolution7ftHeld",
                  "materialDamping7ft", "tapes7ft",
                  "tolerance7ftLong",
                  "resolution7ftLong", "wrinkling7ft",
-                 "turbulence7ftConverged")
+                 "turbulence7ftConverged", "damping7ftTutorial",
+                 "resolution7ftDamped")
 
 
 # Studies whose report gets the breathing in the Strouhal band (issue 34
@@ -3851,7 +3858,8 @@ BREATHING_STUDIES = ("domain7ftLong", "damping7ftLong", "resolution7ftHeld",
                      "numerics7ftMarkerHalf", "resolutionT10Skirt",
                      "payloadT10SkirtLong",
                      "turbulence7ftConverged", "mainJobLevel7ft",
-                     "damping7ftTutorial", "payloadT10Tutorial")
+                     "damping7ftTutorial", "payloadT10Tutorial",
+                     "resolution7ftDamped")
 
 
 def breathing_band_lines(results):
@@ -8961,6 +8969,8 @@ def write_report():
                     "resolution7ftCells", "resolution7ftUndamped",
                     "resolution7ftUndampedContinued",
                     "resolution7ftUntil2"):
+            md += gci_lines(results)
+        if name == "resolution7ftDamped":
             md += gci_lines(results)
         if name in ("resolution7ftUntil2Long", "resolution7ftMarkerHalf"):
             md += gci_lines(results)
