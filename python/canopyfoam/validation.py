@@ -8239,8 +8239,9 @@ DAMPING_7FT_TUTORIAL_PROSE = [
     "at 0.34 Hz (5.7 cm, at the band's edge) against 0.75 Hz (6.7 cm), "
     "the descent speed's at 0.84 against 0.99 Hz. And it halves the "
     "coupling's work: 1.15 iterations a step over 10-40 s and 1.28 over "
-    "40-80 s against 2.58 and 2.86, the 40-80 s part in 339 s against "
-    "604 s on 2 ranks, each alone on the machine.",
+    "40-80 s against 2.58 and 2.86; from rest to 40 s in 5.0 minutes "
+    "against 9.1 and the 40-80 s part in 339 s against 604 s on 2 ranks, "
+    "each alone on the machine.",
     "",
     "At 18 cells across D0 (10-40 s) the damping moves C_D0 beyond the "
     "pair's interval: 0.839 against 0.910 (descent 5.57 ± 0.09 against "
