@@ -7700,8 +7700,13 @@ def resolution_cells_lines():
     for ident in ids:
         rec = archive.load(ARCHIVE_DIR, RUN_BY_ID[ident])[0]
         if rec is None or not rec.get("complete") or not rec["analysis"]:
-            md.append("| %s | %g | - | not run | - | - | - | - |"
-                      % (ident, cells_per_diameter(RUN_BY_ID[ident])))
+            run = RUN_BY_ID[ident]
+            state = run_state(run)
+            where = ("stopped at t = %s s" % last_time(run.case_dir)
+                     if state == "stopped" else state if state in
+                     ("running",) else "not run")
+            md.append("| %s | %g | - | %s | - | - | - | - |"
+                      % (ident, cells_per_diameter(run), where))
             continue
         a = rec["analysis"]
         v = a["descentVelocity"]
