@@ -5,6 +5,10 @@ Reading needs h5py (Debian's python3-h5py; bin/setup installs it).
 
 import os
 
+# The node and spring groups of the file's mesh/node_group and
+# mesh/spring_group (libcanopy's canopy_group, src/canopy/include/canopy.h)
+GROUP_FABRIC, GROUP_TAPE, GROUP_LINE, GROUP_PAYLOAD = 0, 1, 2, 3
+
 
 def path(case_dir):
     """<case_dir>/postProcessing/canopy/canopy.h5"""

@@ -38,8 +38,6 @@ import numpy as np
 
 from . import canopy_h5
 
-PAYLOAD_GROUP = 3      # libcanopy's node group of the payload (canopy.h)
-
 
 class LoadMomentError(Exception):
     """The states needed are not in the file (named in the message)."""
@@ -113,7 +111,7 @@ def analyse(case_dir, t0=-math.inf, t1=math.inf, stabiliser=None,
             triangles = f["mesh/triangles"][:]
             node_mass = f["mesh/node_mass"][:] if gravity is not None \
                 else None
-            payload = np.nonzero(groups == PAYLOAD_GROUP)[0]
+            payload = np.nonzero(groups == canopy_h5.GROUP_PAYLOAD)[0]
             if payload.size != 1:
                 raise LoadMomentError("%s: %d payload nodes, not one"
                                       % (os.path.relpath(path, case_dir),

@@ -30,8 +30,8 @@ from collections import defaultdict
 import numpy as np
 
 from . import canopy_h5
+from .canopy_h5 import GROUP_FABRIC, GROUP_TAPE, GROUP_PAYLOAD
 
-GROUP_FABRIC, GROUP_TAPE, GROUP_PAYLOAD = 0, 1, 3
 RING_EDGES = (0.0, 0.3, 0.5, 0.7, 0.85, 1.0)
 FOLDED_DEGREES = 90.0
 SILHOUETTE_CELLS = 256

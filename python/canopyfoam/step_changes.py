@@ -6,7 +6,8 @@ over the step (python/canopyfoam/report.py's "coupling"). This module reads
 the states canopy.h5 holds in an interval and, when they are consecutive
 time steps of the run (the run wrote every step: writeControl timeStep,
 writeInterval 1), gives for consecutive states n-1, n:
-- the cloth triangles' velocity (the mean of their three nodes'), its change
+- the canopy's triangles' velocity (the mean of their three nodes', the
+  fabric's and the tapes' alike), its change
   dv_n between the states: the root mean square of |dv_n| over the
   triangles and the steps, split into its part along the triangle's normal
   (at state n) and the rest, in the cloth's plane;
@@ -25,8 +26,6 @@ import os
 import numpy as np
 
 from . import canopy_h5
-
-GROUP_FABRIC, GROUP_LINE = 0, 2
 
 
 class StepChangeError(Exception):
@@ -97,11 +96,10 @@ def analyse(case_dir, t0, t1, step_times):
     times = [s[0] for s in states]
     x = np.array([s[1] for s in states])
     v = np.array([s[2] for s in states])
-    cloth = triangles[np.all(groups[triangles] == GROUP_FABRIC, axis=1)]
-    if not len(cloth):
-        raise StepChangeError("no cloth triangles in canopy.h5's mesh")
-    tv = v[:, cloth].mean(axis=2)
-    xt = x[:, cloth]
+    if not len(triangles):
+        raise StepChangeError("no triangles in canopy.h5's mesh")
+    tv = v[:, triangles].mean(axis=2)
+    xt = x[:, triangles]
     normal = np.cross(xt[:, :, 1] - xt[:, :, 0], xt[:, :, 2] - xt[:, :, 0])
     normal /= np.linalg.norm(normal, axis=2)[..., None]
     dv = np.diff(tv, axis=0)
@@ -111,14 +109,14 @@ def analyse(case_dir, t0, t1, step_times):
         "timeFirst": times[0],
         "timeLast": times[-1],
         "meanStep": (times[-1] - times[0]) / (len(states) - 1),
-        "clothTriangles": int(len(cloth)),
+        "clothTriangles": int(len(triangles)),
         "clothRms": rms(dv),
         "clothNormalRms": rms(along),
         "clothInPlaneRms": rms(dv - along),
         "clothCorrelation": lag_correlation(dv),
         "clothInPlaneCorrelation": lag_correlation(dv - along),
     }
-    lines = np.flatnonzero(groups == GROUP_LINE)
+    lines = np.flatnonzero(groups == canopy_h5.GROUP_LINE)
     if len(lines):
         dl = np.diff(v[:, lines], axis=0)
         out.update(lineNodes=int(len(lines)), linesRms=rms(dl),
