@@ -1,6 +1,7 @@
 """figures.py — the parachute benchmark's figures from finished runs: the main job's C_D0 error against the resolution study's converged value, and each resolution level's cost and coupling iterations in steady descent.
 
 Usage: python3 figures.py mainjob <case dir> <wall seconds>
+       python3 figures.py mainjob   (the main job's validation run)
        python3 figures.py levels [study]
        python3 figures.py study      (prints the default study's name)
 Prints BENCH lines (name value unit) and '# ' comment lines.
@@ -11,7 +12,10 @@ last third its Allrun's report reads), against the converged value of
 the study the 7 ft reference names (report.py's convergedStudy: its
 finest run and GCI, bin/canopy-validate converged <study>, from the
 committed records); then both over that interval, when the finest run
-is in build/validation and its series covers it.
+is in build/validation and its series covers it. Without a case: the
+main job's run of bin/canopy-validate (validation.MAIN_JOB_RUN in
+build/validation, its wall time from mesh to report as the validation
+run measured it), for a report made without the benchmark's own run.
 
 levels: for each run of a resolution study (default the study the 7 ft
 reference's summaries compare with, report.py's convergedStudy; e.g.
@@ -89,6 +93,20 @@ def main_job(case_dir, wall):
           % ((cd0 - fine) / fine))
 
 
+def main_job_validation():
+    """main_job on the main job's validation run, when it is complete in
+    build/validation."""
+    job = val.RUN_BY_ID[val.MAIN_JOB_RUN]
+    wall, ranks = val.wall_time(job.case_dir)
+    if val.run_state(job) != "complete" or wall is None:
+        print("# the main job's validation run is not in build/validation "
+              "(bin/canopy-validate run %s)" % job.ident)
+        return
+    print("# from the validation run %s (bin/canopy-validate, %d ranks, "
+          "mesh to report)" % (job.ident, ranks))
+    main_job(job.case_dir, wall)
+
+
 def step_costs(log, t0, t1):
     """Wall seconds per time step over the steps of the solver log (the
     last part of a continued run) that end in [t0, t1]; their count and the
@@ -153,6 +171,8 @@ def levels(study=STUDY):
 if __name__ == "__main__":
     if len(sys.argv) == 4 and sys.argv[1] == "mainjob":
         main_job(sys.argv[2], float(sys.argv[3]))
+    elif len(sys.argv) == 2 and sys.argv[1] == "mainjob":
+        main_job_validation()
     elif len(sys.argv) == 2 and sys.argv[1] == "study":
         print(STUDY)
     elif len(sys.argv) in (2, 3) and sys.argv[1] == "levels":
