@@ -5811,7 +5811,7 @@ STUDY_CAVEATS = {
     "resolution7ftMarkerHalf": "its levels are the tutorial's before "
     "nylon's damping (the damped tutorial's levels, resolution7ftDamped, "
     "lack their 27-cell level; levels7ftDamped gives 12 and 18 cells over "
-    "the main job's 40-80 s), its finest level is 27 cells across D0 "
+    "40-80 s), its finest level is 27 cells across D0 "
     "(the 40-cell level on the narrow refinement, about 9 hours on 2 "
     "cores, is not complete), and its levels converge oscillatorily in C_D0 "
     "and the descent, so the GCI is Roache's bound (safety factor 3 with "
@@ -8345,14 +8345,14 @@ RESOLUTION_DAMPED_PROSE = [
     "neither damped level settled: over 40-80 s (study levels7ftDamped) "
     "the 12-cell level gives 0.851 and the 18-cell level 0.898.", ""]
 
-# The tutorial as it is at 12 and 18 cells over the main job's long
-# window (study levels7ftDamped)
+# The tutorial as it is at 12 and 18 cells from rest to 80 s, read over
+# 40-80 s (study levels7ftDamped)
 LEVELS_DAMPED_PROSE = [
     "Each level from rest to 80 s in one piece, written every 0.5 s. At "
     "12 cells over 40-80 s: 5.53 ± 0.05 m/s, C_D0 0.851, Dp/D0 0.801 (the "
     "same set-up continued from a 40 s write, written every 0.25 s, gave "
-    "0.835: the write times shorten the steps that reach them, and the "
-    "two runs part); read over the main job's 30-70 s, 0.843. At 18 "
+    "0.835: runs whose writes differ part, as study default7ft found); "
+    "read over the main job's 30-70 s, 0.843. At 18 "
     "cells over 40-80 s: 5.39 ± 0.07 m/s, C_D0 0.898, Dp/D0 0.807, crown "
     "0.243 against 0.220 D0, breathing at 1.22 Hz (St 0.39) with 1.5 cm "
     "against 0.55 Hz (St 0.17) with 5.5 cm. Over 10-40 s this 18-cell "

@@ -6,9 +6,9 @@ Usage: python3 figures.py mainjob <case dir> <wall seconds>
        python3 figures.py study      (prints the default study's name)
 Prints BENCH lines (name value unit) and '# ' comment lines.
 
-mainjob: C_D0 of the case over the main job's own interval (run
-7ft-default's steady interval in python/canopyfoam/validation.py, the
-last third its Allrun's report reads), against the converged value of
+mainjob: C_D0 of the case over the main job's own interval (the steady
+interval of validation.MAIN_JOB_RUN in python/canopyfoam/validation.py,
+the one its Allrun's report reads), against the converged value of
 the study the 7 ft reference names (report.py's convergedStudy: its
 finest run and GCI, bin/canopy-validate converged <study>, from the
 committed records); then both over that interval, when the finest run
