@@ -2730,6 +2730,44 @@ def earlier_scheme(run):
 
 
 
+# The coupling's and the cloth's entries whose tutorial value changed as
+# the model did: runs of one study that differ in one of them compare
+# those models as well as what the study varies
+MODEL_ENTRIES = ("coupling/load/reaction", "coupling/load/pressureHeld",
+                 "coupling/addedMass/filter",
+                 "coupling/forcing/markerSpacing",
+                 "coupling/forcing/markerSpacingCells",
+                 "fabric/compressionRatio", "fabric/bendingDampingUntil",
+                 "fabric/damping", "lines/damping")
+
+
+def model_difference_lines(runs):
+    """The MODEL_ENTRIES in which runs of the same tutorial differ, each
+    value with the runs that have it (the tutorial's own where a run does
+    not set the entry), as markdown; nothing where they agree."""
+    parts = []
+    for tutorial in sorted({run.tutorial for run in runs}):
+        group = [run for run in runs if run.tutorial == tutorial]
+        for key in MODEL_ENTRIES:
+            values = {}
+            for run in group:
+                set_to = [e[2] for e in run.edits if e[1] == key]
+                value = set_to[-1] if set_to else "the tutorial's"
+                if value == REMOVE:
+                    value = "removed (the code's default)"
+                values.setdefault(value, []).append(run.ident)
+            if len(values) > 1:
+                parts.append("%s: %s" % (key.replace("/", "."), "; ".join(
+                    "%s (%s)" % (value, ", ".join(ids))
+                    for value, ids in values.items())))
+    if not parts:
+        return []
+    return ["The runs' definitions differ in these entries of the model "
+            "(python/canopyfoam/validation.py; a difference the study does "
+            "not vary is a second change in the comparison): %s."
+            % " — ".join(parts), ""]
+
+
 def earlier_seven(run):
     """Whether a run on the 7 ft tutorial starts from its earlier default."""
     skip = len(narrow_box(SEVEN) + max_norm(SEVEN)) if narrow(run) else 0
@@ -2750,7 +2788,8 @@ STUDIES = [
     ("domain7ftLong", "7 ft canopy on the guide wire: the box's width "
      "over a long window (the main job's set-up: 18 cells across D0 at the "
      "canopy, from rest to 40 s, read over 10-40 s)",
-     ["7ft-default-w5.6-40s", "7ft-default-40s", "7ft-default-w11-40s"]),
+     ["7ft-default-w5.6-40s", "7ft-default-markers-40s",
+      "7ft-default-w11-40s"]),
     ("domain7ftStiff", "7 ft canopy on the guide wire: the box's width "
      "(12 cells across D0 at the canopy, the seed's cloth as stiff in "
      "compression as in tension, read over 5-8 s)",
@@ -2819,7 +2858,7 @@ STUDIES = [
      "material damping over a long window (the main job's set-up: 18 cells "
      "across D0, from rest to 40 s, read over 10-40 s; the damped canopy "
      "also to 60 s, read over 26-60 s)",
-     ["7ft-default-40s", "7ft-default-bend1000-40s",
+     ["7ft-default-markers-40s", "7ft-default-bend1000-40s",
       "7ft-default-loss0.1-40s", "7ft-default-loss0.1-60s"]),
     ("damping7ft", "7 ft canopy, the cloth without stiffness in "
      "compression: the hinge dashpots' rate (12 cells across D0, read over "
@@ -3036,7 +3075,7 @@ STUDIES = [
      "long window (the main job's set-up: 18 cells across D0, from rest to "
      "40 s, read over 10-40 s; fabric edge 1.25, 0.83 and 0.56 finest "
      "cells)",
-     ["7ft-default-40s", "7ft-default-edge0.83-40s",
+     ["7ft-default-markers-40s", "7ft-default-edge0.83-40s",
       "7ft-default-edge0.56-40s"]),
     ("edgeAgainstCells7ft", "7 ft canopy: the fabric's edge against the "
      "air's resolution (the tutorial's cloth and load; 18 and 27 cells "
@@ -7188,13 +7227,15 @@ CELL_REACTION_NOTES += [
     "each marker's own force.", "",
     "Every 7 ft study in this report but the main job's two runs and "
     "hingeDampingCells7ft was made with each marker's own force (their "
-    "runs keep coupling.load.reaction markers). Where a study compares "
-    "with 7ft-default or 7ft-default-40s (domain7ftLong, damping7ftLong, "
-    "turbulence7ftConverged, edgeLength7ftLong, hingeDamping7ft, "
-    "materialDamping7ft, tapes7ft, the main job's comparisons) it now "
-    "compares two loads; the resolution, time-step and cloth studies are "
-    "to be re-made on the cells' load before their converged values "
-    "stand for the tutorial.", "",
+    "runs keep coupling.load.reaction markers). The studies over 10-40 s "
+    "(domain7ftLong, damping7ftLong, turbulence7ftConverged, "
+    "edgeLength7ftLong) compare with 7ft-default-markers-40s, the main "
+    "job's 40 s run on each marker's own force; those over 8-12 s that "
+    "compare with 7ft-default-12s (hingeDamping7ft, materialDamping7ft, "
+    "tapes7ft and others) compare two loads, as each study's section "
+    "says where its runs' definitions differ; the resolution, time-step "
+    "and cloth studies are to be re-made on the cells' load before their "
+    "converged values stand for the tutorial.", "",
 ]
 
 
@@ -8792,6 +8833,7 @@ def write_report():
                        "" if all(v == current for _, v in made) else
                        " Runs made with another version may not match the "
                        "current code: re-run them."), ""]
+        md += model_difference_lines(runs)
         refs = []
         done = complete_means(results,
                               MESH_SPREAD_RUNS.get(name, lambda run: True))
@@ -9282,7 +9324,8 @@ def write_report():
                    "30 s hold 11.5 and 9.4 independent samples, and the "
                    "95 % intervals of C_D0 (twice those of the descent) "
                    "are ±1.4 % (8 D0) and ±2.3 % (11 D0).", "",
-                   "The 8 D0 run (7ft-default-40s) was re-made twice, "
+                   "The 8 D0 run (7ft-default-markers-40s) was re-made "
+                   "twice, "
                    "with the markers' positions and normals relaxed with "
                    "the iterate and then with their areas too (\"The "
                    "coupling's two-cycle: the markers relaxed with the "
@@ -9297,14 +9340,14 @@ def write_report():
                    "first from 30.9 s on); the 11 D0 run was re-made with "
                    "the current coupling (before both changes: 6.26 ± "
                    "0.04 m/s, C_D0 0.664).", "",
-                   "**The 8 D0 run is now on the load taken from the "
-                   "cells** (section \"The load is the reaction of the "
-                   "force in the cells\"): 5.46 ± 0.03 m/s, C_D0 0.874 "
-                   "over 10-40 s, where each marker's own force gave "
-                   "6.22 ± 0.04 and 0.674. The 5.6 and 11 D0 runs are "
-                   "still on each marker's own force, so the table "
-                   "compares two loads, not two widths; the paragraph "
-                   "below is about the runs before that change.", "",
+                   "All three boxes take each marker's own force as the "
+                   "load; the 8 D0 run is the main job's 40 s run of "
+                   "that load, kept as 7ft-default-markers-40s. On the "
+                   "load taken from the cells the same set-up gives 5.46 "
+                   "± 0.03 m/s, C_D0 0.874 over 10-40 s (7ft-default-40s, "
+                   "section \"The load is the reaction of the force in "
+                   "the cells\"); the box's width on the tutorial as it "
+                   "is: study domain7ftTutorial.", "",
                    "C_D0 is 0.680, 0.674 and 0.658 in the 5.6, 8 and 11 "
                    "D0 boxes: the 8 D0 box gives 2.4 % more than the "
                    "11 D0 box, inside their combined interval of ±2.7 %. "
@@ -9525,8 +9568,8 @@ def write_report():
                    "interval; over 10-40 s within it.", ""]
             md += ["7ft-default-loss0.1-40s was made with the markers' "
                    "positions and normals relaxed with the iterate but not "
-                   "yet their areas; 7ft-default-40s with the current "
-                   "coupling. Over 10-40 s the loss factor of 0.1 gives "
+                   "yet their areas; 7ft-default-markers-40s with their "
+                   "areas relaxed too. Over 10-40 s the loss factor of 0.1 gives "
                    "6.02 ± 0.33 m/s against 6.22 ± 0.04 (C_D0 0.719 "
                    "against 0.674), inside the combined interval, so "
                    "nylon's damping at that loss factor is not shown to "

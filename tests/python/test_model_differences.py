@@ -1,0 +1,52 @@
+"""test_model_differences.py — known-answer tests of the line that names the model entries in which a study's runs differ (python/canopyfoam/validation.py, model_difference_lines), and of the 10-40 s studies that compare runs of one load.
+
+Run as:  /usr/bin/python3 tests/python/test_model_differences.py   (./Alltest model_differences)
+Prints one PASS/FAIL line per check; exits 1 if any fails.
+
+Synthetic runs of the 7 ft tutorial: one on the tutorial's load, one with
+coupling.load.reaction markers, one with the markers' spacing removed;
+runs that agree give no line, runs of two tutorials are compared within
+each tutorial only. Then the studies domain7ftLong, damping7ftLong,
+edgeLength7ftLong and turbulence7ftConverged as defined: their first two
+runs must agree in every model entry (each pairs runs of one load).
+"""
+
+from checks import check, finish
+from canopyfoam import validation as v
+
+PROPS = v.PROPS
+tutorial = v.Run("test-tutorial", v.SEVEN, "synthetic; interval 10-40 s")
+markers = v.Run("test-markers", v.SEVEN, "synthetic; interval 10-40 s",
+                edits=[(PROPS, "coupling/load/reaction", "markers")])
+removed = v.Run("test-removed", v.SEVEN, "synthetic; interval 10-40 s",
+                edits=[(PROPS, "coupling/forcing/markerSpacingCells",
+                        v.REMOVE)])
+same = v.Run("test-same", v.SEVEN, "synthetic; interval 10-40 s",
+             edits=[("system/controlDict", "endTime", "12")])
+other = v.Run("test-other", "parachutes/T10", "synthetic; interval 10-40 s",
+              edits=[(PROPS, "coupling/load/reaction", "markers")])
+
+text = "\n".join(v.model_difference_lines([tutorial, markers]))
+check("a load that differs is named with its runs",
+      "coupling.load.reaction: the tutorial's (test-tutorial); markers "
+      "(test-markers)" in text, text)
+text = "\n".join(v.model_difference_lines([tutorial, removed]))
+check("a removed entry says so",
+      "removed (the code's default) (test-removed)" in text, text)
+check("runs that agree in the model give no line",
+      v.model_difference_lines([tutorial, same]) == [],
+      v.model_difference_lines([tutorial, same]))
+check("runs of two tutorials are compared within each",
+      v.model_difference_lines([tutorial, other]) == [],
+      v.model_difference_lines([tutorial, other]))
+
+studies = dict((s[0], s[2]) for s in v.STUDIES)
+for name in ("domain7ftLong", "damping7ftLong", "edgeLength7ftLong",
+             "turbulence7ftConverged"):
+    first_two = [v.RUN_BY_ID[i] for i in studies[name][:2]]
+    lines = v.model_difference_lines(first_two)
+    check("%s: %s and %s on one model" % (name, first_two[0].ident,
+                                          first_two[1].ident),
+          lines == [], lines)
+
+finish()
