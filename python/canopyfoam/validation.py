@@ -2609,27 +2609,20 @@ SEVEN_DAMPED_RUNS = [
         steady_start=40, steady_end=80)
     for n in (12, 18)]
 RUNS += SEVEN_DAMPED_RUNS
-# Turbulence on the tutorial as it is (issue 34 item 3): the WALE LES
-# model with LUST convection at 12 cells across D0 (the main job's set-up,
-# from rest to 70 s, read over 30-70 s) and at 18 (from rest to 80 s,
-# read over 40-80 s), each against its laminar run above. The LES run of
-# study turbulence7ftConverged kept each marker's own force as the load
-# (coupling.load.reaction markers) where its laminar partner takes it
-# from the cells, so that pair differs in the load as well
-SEVEN_DAMPED_LES_RUNS = [
-    Run("7ft-cpd12-damped-LES-70s", SEVEN, "box 8 D0 wide, 12 cells across "
-        "D0, the tutorial as it is (nylon's damping, loss factor 0.02 at 2 "
-        "Hz, in the cloth and the lines; the hinge dashpots off from 2 s, "
-        "the markers half a cell apart), LES (WALE, LUST convection), from "
-        "rest to 70 s; interval 30-70 s", ["-cellsPerDiameter", "12"],
-        edits=LES, reference="7ft", steady_start=30, steady_end=70),
-    Run("7ft-cpd18-damped-LES-80s", SEVEN, "box 8 D0 wide, 18 cells across "
-        "D0, the tutorial as it is (nylon's damping, loss factor 0.02 at 2 "
-        "Hz, in the cloth and the lines; the hinge dashpots off from 2 s, "
-        "the markers half a cell apart), LES (WALE, LUST convection), from "
-        "rest to 80 s; interval 40-80 s", ["-cellsPerDiameter", "18"],
-        edits=LES + [("system/controlDict", "endTime", "80")],
-        reference="7ft", steady_start=40, steady_end=80)]
+# Turbulence on the tutorial as it is (issue 34 item 3): each run above
+# with the WALE LES model and LUST convection, against its laminar self
+def seven_damped_les(run):
+    """Run `run` of SEVEN_DAMPED_RUNS with LES (WALE, LUST convection)."""
+    return Run(run.ident.replace("-damped-", "-damped-LES-"), SEVEN,
+               run.label.replace(", from rest", ", LES (WALE, LUST "
+                                 "convection), from rest"),
+               run.options, edits=LES + run.edits, reference="7ft",
+               steady_start=run.steady_start, steady_end=run.steady_end)
+
+
+SEVEN_DAMPED_LES_RUNS = [seven_damped_les(r) for r in SEVEN_DAMPED_RUNS
+                         if r.ident in ("7ft-cpd12-damped-70s",
+                                        "7ft-cpd18-damped-80s")]
 RUNS += SEVEN_DAMPED_LES_RUNS
 # The T-10 tutorial on the 7 ft tutorial's coupling with its markers half
 # a cell apart (coupling.load.reaction cells, addedMass.filter kernel,
@@ -8740,8 +8733,9 @@ TURBULENCE_DAMPED_PROSE = [
     "and 0.898 (+0.2 %). Both changes lie inside the pairs' combined "
     "intervals (about ±3 %) and far inside the converged value's GCI, and "
     "the 12-to-18-cell change of C_D0 is the same with and without LES "
-    "(+6.5 % and +7.1 %, 30-70 s at 12 cells against 40-80 s at 18). Dp/D0 is 0.786 against 0.800 "
-    "at 12 cells and 0.808 against 0.807 at 18; the crown stands 0.229 "
+    "(+6.5 % and +7.1 %, 30-70 s at 12 cells against 40-80 s at 18). "
+    "Dp/D0 is 0.786 against 0.800 at 12 cells and 0.808 against 0.807 at "
+    "18; the crown stands 0.229 "
     "against 0.220 D0 and 0.238 against 0.243 D0 above the skirt; the "
     "breathing's largest peak is 0.44 against 0.56 Hz (3.9 against 4.7 cm) "
     "at 12 cells and 1.24 against 1.22 Hz (2.2 against 1.5 cm) at 18. The "
@@ -8750,8 +8744,9 @@ TURBULENCE_DAMPED_PROSE = [
     "and the breathing move less than the windows' scatter, as expected "
     "of a bluff body whose flow separates at a sharp edge (the skirt), "
     "where the separation does not depend on the boundary layer the "
-    "sub-grid model would change. LES costs 964 against 829 s at 12 cells (+16 %) and "
-    "94 against 61 minutes at 18 (+53 %, its coupling taking 1.78 "
+    "sub-grid model would change. LES costs 964 against 829 s at 12 "
+    "cells (+16 %) and 94 against 61 minutes at 18 (+53 %, its coupling "
+    "taking 1.78 "
     "iterations a step against 1.20). The tutorials stay laminar.", ""]
 
 
