@@ -6,7 +6,8 @@ Prints one PASS/FAIL line per check; exits 1 if any fails.
 Synthetic runs of the 7 ft tutorial: one on the tutorial's load, one with
 coupling.load.reaction markers, one with the markers' spacing removed;
 runs that agree give no line, runs of two tutorials are compared within
-each tutorial only. Then the studies domain7ftLong, damping7ftLong,
+each tutorial only; an entry set to the tutorial's own value (read from
+the tutorial's dictionary, in its sub-dictionary) agrees with it. Then the studies domain7ftLong, damping7ftLong,
 edgeLength7ftLong and turbulence7ftConverged as defined: their first two
 runs must agree in every model entry (each pairs runs of one load).
 """
@@ -39,6 +40,31 @@ check("runs that agree in the model give no line",
 check("runs of two tutorials are compared within each",
       v.model_difference_lines([tutorial, other]) == [],
       v.model_difference_lines([tutorial, other]))
+
+own = v.Run("test-own", v.SEVEN, "synthetic; interval 10-40 s",
+            edits=[(PROPS, "fabric/damping",
+                    v.tutorial_entry(v.SEVEN, PROPS, "fabric/damping"))])
+check("an entry set to the tutorial's own value agrees with the tutorial",
+      v.model_difference_lines([tutorial, own]) == [],
+      v.model_difference_lines([tutorial, own]))
+# lines.damping is read in its own sub-dictionary, not fabric's damping
+fabric_value = v.tutorial_entry(v.SEVEN, PROPS, "fabric/damping")
+lines_value = v.tutorial_entry(v.SEVEN, PROPS, "lines/damping")
+check("a nested entry is read in its sub-dictionary",
+      fabric_value is not None and lines_value is not None
+      and float(fabric_value) != float(lines_value),
+      "fabric %s, lines %s" % (fabric_value, lines_value))
+sibling = v.Run("test-sibling", v.SEVEN, "synthetic; interval 10-40 s",
+                edits=[(PROPS, "lines/damping", fabric_value)])
+text = "\n".join(v.model_difference_lines([tutorial, sibling]))
+check("a value equal to a sibling sub-dictionary's still differs",
+      "lines.damping: the tutorial's (test-tutorial); %s (test-sibling)"
+      % fabric_value in text, text)
+check("an absent entry reads as None",
+      v.tutorial_entry(v.SEVEN, PROPS, "coupling/forcing/markerSpacing")
+      is None and v.tutorial_entry(v.SEVEN, PROPS, "no/such/entry") is None,
+      "markerSpacing %r" % v.tutorial_entry(v.SEVEN, PROPS,
+                                            "coupling/forcing/markerSpacing"))
 
 studies = dict((s[0], s[2]) for s in v.STUDIES)
 for name in ("domain7ftLong", "damping7ftLong", "edgeLength7ftLong",
