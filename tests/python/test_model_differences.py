@@ -29,7 +29,7 @@ other = v.Run("test-other", "parachutes/T10", "synthetic; interval 10-40 s",
 
 text = "\n".join(v.model_difference_lines([tutorial, markers]))
 check("a load that differs is named with its runs",
-      "coupling.load.reaction: the tutorial's (test-tutorial); markers "
+      "coupling.load.reaction: the tutorial's cells (test-tutorial); markers "
       "(test-markers)" in text, text)
 text = "\n".join(v.model_difference_lines([tutorial, removed]))
 check("a removed entry says so",
@@ -58,8 +58,8 @@ sibling = v.Run("test-sibling", v.SEVEN, "synthetic; interval 10-40 s",
                 edits=[(PROPS, "lines/damping", fabric_value)])
 text = "\n".join(v.model_difference_lines([tutorial, sibling]))
 check("a value equal to a sibling sub-dictionary's still differs",
-      "lines.damping: the tutorial's (test-tutorial); %s (test-sibling)"
-      % fabric_value in text, text)
+      "lines.damping: the tutorial's %s (test-tutorial); %s (test-sibling)"
+      % (lines_value, fabric_value) in text, text)
 check("an absent entry reads as None",
       v.tutorial_entry(v.SEVEN, PROPS, "coupling/forcing/markerSpacing")
       is None and v.tutorial_entry(v.SEVEN, PROPS, "no/such/entry") is None,
