@@ -8471,7 +8471,7 @@ RESOLUTION_DAMPED_PROSE = [
     "simulated seconds a minute while the hinge dashpots hold the "
     "inflating cloth, 0.26 just after they go off at 2 s and 0.18 on "
     "average over 8-20 s, about 4 hours from rest to 40 s alone on 2 "
-    "ranks; it has reached 20 s. Read over 10-20 s while it runs (5.50 "
+    "ranks; its latest write is 24.5 s. Read over 10-20 s while it runs (5.50 "
     "m/s, C_D0 0.862, Dp/D0 0.81), the three levels descend at 6.06, "
     "5.67 and 5.50 m/s (C_D0 0.710, 0.811 and 0.862): monotone, the "
     "change halving from one level to the next (an observed order near "
