@@ -22,6 +22,7 @@ plots.
 """
 
 import argparse
+import functools
 import math
 import os
 import re
@@ -2737,6 +2738,7 @@ MODEL_ENTRIES = ("coupling/load/reaction", "coupling/load/pressureHeld",
                  "fabric/damping", "lines/damping")
 
 
+@functools.lru_cache(maxsize=None)
 def tutorial_entry(tutorial, dictionary, entry):
     """The value of a tutorial's dictionary entry (`entry` a '/'-separated
     path through its sub-dictionaries) as written, comments dropped and
@@ -4846,20 +4848,16 @@ TABLE_HEAD = ("| run | setting | cells | simulated | terminal velocity "
 def run_setting(run, dictionary, entry):
     """A numeric entry of a run's case: its last edit of `entry` (a
     foamDictionary path) in `dictionary`, else the tutorial's own value
-    (the first line that sets the path's last key); None if neither or
-    if the last edit removes the entry."""
+    (tutorial_entry); None if neither is a number or if the last edit
+    removes the entry."""
     edited = [e[2] for e in run.edits if e[0] == dictionary and e[1] == entry]
     if edited:
         return None if edited[-1] == REMOVE else float(edited[-1])
-    key = entry.split("/")[-1]
+    own = tutorial_entry(run.tutorial, dictionary, entry)
     try:
-        with open(os.path.join(TOP, "tutorials", run.tutorial,
-                               dictionary)) as f:
-            m = re.search(r"^\s*%s\s+([0-9.eE+-]+)\s*;" % re.escape(key),
-                          f.read(), re.M)
-    except OSError:
+        return float(own)
+    except (TypeError, ValueError):
         return None
-    return float(m.group(1)) if m else None
 
 
 def cells_per_diameter(run):

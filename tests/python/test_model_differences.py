@@ -7,8 +7,9 @@ Synthetic runs of the 7 ft tutorial: one on the tutorial's load, one with
 coupling.load.reaction markers, one with the markers' spacing removed;
 runs that agree give no line, runs of two tutorials are compared within
 each tutorial only; an entry set to the tutorial's own value (read from
-the tutorial's dictionary, in its sub-dictionary) agrees with it. Then the studies domain7ftLong, damping7ftLong,
-edgeLength7ftLong and turbulence7ftConverged as defined: their first two
+the tutorial's dictionary, in its sub-dictionary) agrees with it. Then
+the studies domain7ftLong, damping7ftLong, edgeLength7ftLong and
+turbulence7ftConverged as defined: their first two
 runs must agree in every model entry (each pairs runs of one load).
 """
 
