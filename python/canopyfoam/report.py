@@ -981,9 +981,9 @@ def _converged_line(study, cd0):
     """This run's C_D0 against the converged value of a resolution study
     (the finest level of its committed runs, with its GCI), or None when
     the study has too few complete runs."""
-    from . import validation
+    from . import validation_tables
     try:
-        conv = validation.converged(study)["C_D0 (weight)"]
+        conv = validation_tables.converged(study)["C_D0 (weight)"]
     except (SystemExit, KeyError, OSError, ValueError):
         return None
     line = ("     converged C_D0 %.3g +- %.1f %% (GCI; %s, study %s); this "

@@ -1,4 +1,4 @@
-"""test_air_levels.py — known-answer tests of a resolution study whose levels continue one source run (python/canopyfoam/validation.py: study_levels, air_levels_lines; study resolution7ftMapped).
+"""test_air_levels.py — known-answer tests of a resolution study whose levels continue one source run (python/canopyfoam/validation_tables.py: study_levels, air_levels_lines; study resolution7ftMapped).
 
 Run as:  /usr/bin/python3 tests/python/test_air_levels.py   (./Alltest air_levels)
 Prints one PASS/FAIL line per check; exits 1 if any fails.
@@ -22,11 +22,13 @@ by bin (6.0, 5.9, 5.8) has its lowest in the last bin and says so.
 """
 
 from checks import check, finish
-from canopyfoam import validation as v
+from canopyfoam.validation_runs import Run, SEVEN
+from canopyfoam.validation_tables import (air_levels_lines,
+                                          start_transient_lines, study_levels)
 
 
 def level(ident, cells, source="t-source"):
-    return v.Run(ident, v.SEVEN, "synthetic",
+    return Run(ident, SEVEN, "synthetic",
                  ["-cellsPerDiameter", "%d" % cells], rest_state_of=source)
 
 
@@ -51,7 +53,7 @@ def study(*cds):
             for r, c in zip(runs, cds)]
 
 
-kept = v.study_levels(study(0.74, 0.76, 0.80, 0.99))
+kept = study_levels(study(0.74, 0.76, 0.80, 0.99))
 check("study_levels keeps the levels and drops the source",
       [r.ident for r, _ in kept] == ["t-40", "t-27", "t-18"],
       [r.ident for r, _ in kept])
@@ -59,10 +61,10 @@ check("study_levels keeps the levels and drops the source",
 own = [level("o-27", 27, source="s-27"), level("o-18", 18, source="s-18"),
        level("o-12", 12, source="s-12")]
 check("levels that each continue their own source are all kept",
-      [r.ident for r, _ in v.study_levels([(r, None) for r in own])]
+      [r.ident for r, _ in study_levels([(r, None) for r in own])]
       == ["o-27", "o-18", "o-12"], "")
 
-text = "\n".join(v.air_levels_lines(kept))
+text = "\n".join(air_levels_lines(kept))
 rows = text.splitlines()
 check("coarse first: cells, mesh cells, descent, C_D0 ± half-width, Dp/D0, "
       "C_Dp, breathing, iterations, wall time",
@@ -83,7 +85,7 @@ check("the GCI over the three levels",
 check("the source appears nowhere", "0.99" not in text and "t-source"
       not in text, "t-source" in text)
 
-text = "\n".join(v.air_levels_lines(v.study_levels(
+text = "\n".join(air_levels_lines(study_levels(
     study(None, 0.76, 0.80, 0.99))))
 check("a level not run is named with its command",
       "| 40 | — | t-40 | not run (`bin/canopy-validate run t-40`) |" in text
@@ -102,13 +104,13 @@ def series_record(bins, width=0.5, per_bin=10):
                                                              "v": v_}}}
 
 
-text = "\n".join(v.start_transient_lines(
+text = "\n".join(start_transient_lines(
     [(runs[0], series_record([5.0, 4.0, 5.5, 6.0, 5.8]))], 0.5, "Title:"))
 check("a dip and a recovery: the bins, the lowest, the highest after it",
       text.startswith("Title:") and "5.00, 4.00, 5.50, 6.00, 5.80 m/s in 0.5 "
       "s bins; lowest 4.00 m/s at 0.5-1 s, then highest 6.00 at 1.5-2 s; "
       "last 5.80." in text, [l for l in text.splitlines() if l.startswith("- ")])
-text = "\n".join(v.start_transient_lines(
+text = "\n".join(start_transient_lines(
     [(runs[0], series_record([6.0, 5.9, 5.8]))]))
 check("the lowest in the last bin", "lowest 5.80 m/s at 1-1.5 s, the last "
       "bin." in text and "highest" not in text,

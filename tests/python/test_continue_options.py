@@ -11,21 +11,22 @@ is not modified.
 """
 
 from checks import check, finish
-from canopyfoam import validation as v
+from canopyfoam.validation_execute import continue_options
+from canopyfoam.validation_runs import RUNS
 
 mapped = ["-cellsPerDiameter", "30", "-mapFieldsFrom", "../source",
           "-steadyStart", "2"]
-got = v.continue_options(mapped)
+got = continue_options(mapped)
 check("-mapFieldsFrom and its folder left out, the rest in order",
       got == ["-cellsPerDiameter", "30", "-steadyStart", "2"], got)
 check("the run's own list is not modified", len(mapped) == 6, mapped)
 plain = ["-cellsPerDiameter", "27"]
-check("options without it unchanged", v.continue_options(plain) == plain,
-      v.continue_options(plain))
-check("no options", v.continue_options([]) == [], v.continue_options([]))
+check("options without it unchanged", continue_options(plain) == plain,
+      continue_options(plain))
+check("no options", continue_options([]) == [], continue_options([]))
 check("every mapped run of the studies goes on without it",
-      all("-mapFieldsFrom" not in v.continue_options(r.options)
-          for r in v.RUNS), sum("-mapFieldsFrom" in r.options
-                                 for r in v.RUNS))
+      all("-mapFieldsFrom" not in continue_options(r.options)
+          for r in RUNS), sum("-mapFieldsFrom" in r.options
+                                 for r in RUNS))
 
 finish()

@@ -1,4 +1,4 @@
-"""test_cross_resolution.py — known-answer tests of the cross's departure against resolution in python/canopyfoam/validation.py (cross_resolution_lines, study crossResolution).
+"""test_cross_resolution.py — known-answer tests of the cross's departure against resolution in python/canopyfoam/validation_tables.py (cross_resolution_lines, study crossResolution).
 
 Run as:  /usr/bin/python3 tests/python/test_cross_resolution.py   (./Alltest cross_resolution)
 Prints one PASS/FAIL line per check; exits 1 if any fails.
@@ -17,7 +17,8 @@ on 2, at σ 3.0 against 2.0 /s, gives σ's scatter from round-off:
 """
 
 from checks import check, finish
-from canopyfoam import validation as v
+from canopyfoam.validation_runs import Run
+from canopyfoam.validation_tables import cross_resolution_lines
 
 
 def record(rate, ranks=2):
@@ -31,10 +32,10 @@ def record(rate, ranks=2):
                                    "angleRms": 20.0}}}
 
 
-runs = [v.Run("test-cpd%d" % n, "parachutes/cross", "synthetic",
+runs = [Run("test-cpd%d" % n, "parachutes/cross", "synthetic",
               ["-cellsPerDiameter", "%d" % n]) for n in (11, 16, 22)]
 
-text = "\n".join(v.cross_resolution_lines(
+text = "\n".join(cross_resolution_lines(
     list(zip(runs, [record(2.0), record(1.8), record(1.5)]))))
 check("cells across an arm", "| test-cpd11 | 2.9 |" in text
       and "| test-cpd22 | 5.8 |" in text, text.splitlines()[4][:80])
@@ -45,7 +46,7 @@ check("every level departs: both ends and the change",
       and "does not make the model's cross stable" in text,
       text.splitlines()[-1][:200])
 
-text = "\n".join(v.cross_resolution_lines(
+text = "\n".join(cross_resolution_lines(
     list(zip(runs, [record(2.0), record(1.8), record(None)]))))
 check("the finest does not depart: the arms' resolution",
       "At 22 cells across the span the payload's speed across gravity stays "
@@ -53,16 +54,16 @@ check("the finest does not depart: the arms' resolution",
       "30.0°, rms 20.0°)" in text and "| none | — |" in text,
       text.splitlines()[-1][:200])
 
-text = "\n".join(v.cross_resolution_lines(
+text = "\n".join(cross_resolution_lines(
     list(zip(runs, [record(2.0), None, record(1.5)]))))
 check("a missing level is named, no verdict",
       "not run (`bin/canopy-validate run test-cpd16`)" in text
       and "needs every level run" in text and "stable." not in text,
       text.splitlines()[-1])
 
-twin = v.Run("test-default", "parachutes/cross", "synthetic, 1 rank",
+twin = Run("test-default", "parachutes/cross", "synthetic, 1 rank",
              ["-cellsPerDiameter", "11"])
-text = "\n".join(v.cross_resolution_lines(
+text = "\n".join(cross_resolution_lines(
     list(zip(runs + [twin], [record(2.0), record(1.8), record(1.5),
                              record(3.0, ranks=1)]))))
 check("the coarsest set-up on other ranks gives σ's scatter",

@@ -1,4 +1,4 @@
-"""test_cross_starts.py — known-answer tests of the cross's flat and folded starts compared in python/canopyfoam/validation.py (cross_starts_lines, study crossStarts).
+"""test_cross_starts.py — known-answer tests of the cross's flat and folded starts compared in python/canopyfoam/validation_tables.py (cross_starts_lines, study crossStarts).
 
 Run as:  /usr/bin/python3 tests/python/test_cross_starts.py   (./Alltest cross_starts)
 Prints one PASS/FAIL line per check; exits 1 if any fails.
@@ -13,7 +13,8 @@ A missing start is named with its command and no verdict is given.
 """
 
 from checks import check, finish
-from canopyfoam import validation as v
+from canopyfoam.validation_runs import Run
+from canopyfoam.validation_tables import cross_starts_lines
 
 
 def record(mean, ci95, drift=0.0):
@@ -27,10 +28,10 @@ def record(mean, ci95, drift=0.0):
                          "swing": {"angleMax": 3.0, "angleRms": 2.0}}}
 
 
-runs = [v.Run("test-flat", "parachutes/cross", "synthetic"),
-        v.Run("test-folded", "parachutes/crossFolded", "synthetic")]
+runs = [Run("test-flat", "parachutes/cross", "synthetic"),
+        Run("test-folded", "parachutes/crossFolded", "synthetic")]
 
-text = "\n".join(v.cross_starts_lines(
+text = "\n".join(cross_starts_lines(
     list(zip(runs, [record(4.80, 0.03, 0.02), record(4.84, 0.04, -0.02)]))))
 check("the row: descent, drift, C_D, Dp/D0, suspension",
       "| test-flat | 4.80 ± 0.03 (2.67-4 s) | +0.02 | 0.70 | 0.80 | "
@@ -40,20 +41,20 @@ check("within the combined interval, steady",
       "their combined interval (± 0.05 m/s)." in text
       and "too short" not in text, text.splitlines()[-1])
 
-text = "\n".join(v.cross_starts_lines(
+text = "\n".join(cross_starts_lines(
     list(zip(runs, [record(4.80, 0.03, 0.02), record(4.90, 0.04)]))))
 check("beyond the combined interval",
       "descends +0.10 m/s from the flat one's, beyond their combined "
       "interval (± 0.05 m/s)" in text, text.splitlines()[-1])
 
-text = "\n".join(v.cross_starts_lines(
+text = "\n".join(cross_starts_lines(
     list(zip(runs, [record(4.80, 0.03, 0.02), record(4.84, 0.04, 0.08)]))))
 check("a drift beyond the interval: too short to tell",
       "test-folded still drifts by more than its interval over the "
       "reading: the runs are too short" in text
       and "test-flat still" not in text, text.splitlines()[-1])
 
-text = "\n".join(v.cross_starts_lines(
+text = "\n".join(cross_starts_lines(
     list(zip(runs, [record(4.80, 0.03), None]))))
 check("a missing start is named, no verdict",
       "not run (`bin/canopy-validate run test-folded`)" in text

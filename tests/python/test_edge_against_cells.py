@@ -1,4 +1,4 @@
-"""test_edge_against_cells.py — known-answer tests of the fabric's edge against the air's resolution in python/canopyfoam/validation.py (window_mean, edge_against_cells_lines, study edgeAgainstCells7ft).
+"""test_edge_against_cells.py — known-answer tests of the fabric's edge against the air's resolution in python/canopyfoam/validation_tables.py (window_mean, edge_against_cells_lines, study edgeAgainstCells7ft).
 
 Run as:  /usr/bin/python3 tests/python/test_edge_against_cells.py   (./Alltest edge_against_cells)
 Prints one PASS/FAIL line per check; exits 1 if any fails.
@@ -23,13 +23,14 @@ with the largest change of each kind.
 import math
 
 from checks import check, finish
-from canopyfoam import validation as v
+from canopyfoam.validation_runs import MESH_DICT, Run, SEVEN
+from canopyfoam.validation_tables import edge_against_cells_lines, window_mean
 
 
 def run(ident, cells, edge):
-    return v.Run(ident, v.SEVEN, "synthetic", edits=[
-        (v.MESH_DICT, "cellsPerDiameter", "%g" % cells),
-        (v.MESH_DICT, "edgeLengthPerCell", "%g" % edge)])
+    return Run(ident, SEVEN, "synthetic", edits=[
+        (MESH_DICT, "cellsPerDiameter", "%g" % cells),
+        (MESH_DICT, "edgeLengthPerCell", "%g" % edge)])
 
 
 def record(speed, rise=0.0, end=12.0):
@@ -42,17 +43,17 @@ def record(speed, rise=0.0, end=12.0):
                          "descentSeries": {"t": t, "v": vel}}}
 
 
-w = v.window_mean(record(5.0, rise=0.4)["analysis"], 8, 12)
+w = window_mean(record(5.0, rise=0.4)["analysis"], 8, 12)
 check("window mean and drift of a ramp",
       abs(w["mean"] - 5.2) < 1e-9 and abs(w["drift"] - 0.4) < 1e-9,
       "mean %.6f, drift %.6f" % (w["mean"], w["drift"]))
 check("a series short of the window has no mean",
-      v.window_mean(record(5.0, end=6.0)["analysis"], 8, 12) is None,
+      window_mean(record(5.0, end=6.0)["analysis"], 8, 12) is None,
       "series to 6 s")
 
 runs = [run("c10-e1.5", 10, 1.5), run("c10-e1", 10, 1),
         run("c15-e1.5", 15, 1.5), run("c15-e1", 15, 1)]
-text = "\n".join(v.edge_against_cells_lines(list(zip(runs, [
+text = "\n".join(edge_against_cells_lines(list(zip(runs, [
     record(6.0), record(5.0), record(6.0, end=6.0), None]))))
 rows = text.splitlines()
 cd5 = 80 / (math.pi * 25)
@@ -66,7 +67,7 @@ check("a series short of the window and a run not run are named",
 check("no complete pair across resolutions: said so",
       "No pair of runs at two air resolutions" in text, rows[-2])
 
-text = "\n".join(v.edge_against_cells_lines(list(zip(runs, [
+text = "\n".join(edge_against_cells_lines(list(zip(runs, [
     record(6.0), record(5.0), record(6.0), record(5.0)]))))
 change_metres = 100 * (25.0 / 36 - 1)     # 5 m/s to 6 m/s: C_D0 x 25/36
 check("the same edge in metres across resolutions",
@@ -84,12 +85,12 @@ check("moved at the same length only: follows the ratio",
       "C_D0 follows the edge's ratio to the cells" in text,
       text.splitlines()[-2])
 
-text = "\n".join(v.edge_against_cells_lines(list(zip(runs, [
+text = "\n".join(edge_against_cells_lines(list(zip(runs, [
     record(6.0), record(5.0), record(5.0), record(4.0)]))))
 check("moved at the same ratio only: follows the length",
       "C_D0 follows the edge's length" in text, text.splitlines()[-2])
 
-text = "\n".join(v.edge_against_cells_lines(list(zip(runs, [
+text = "\n".join(edge_against_cells_lines(list(zip(runs, [
     record(6.0), record(5.0), record(5.5), record(4.2)]))))
 check("moved at both: neither alone, with the largest changes",
       "neither the edge's length nor its ratio to the cells alone sets "

@@ -1,4 +1,4 @@
-"""test_edge_levels.py — known-answer tests of the fabric's edge levels compared in python/canopyfoam/validation.py (edge_levels_lines, studies edgeLength7ft and edgeLength7ftLong).
+"""test_edge_levels.py — known-answer tests of the fabric's edge levels compared in python/canopyfoam/validation_tables.py (edge_levels_lines, studies edgeLength7ft and edgeLength7ftLong).
 
 Run as:  /usr/bin/python3 tests/python/test_edge_levels.py   (./Alltest edge_levels)
 Prints one PASS/FAIL line per check; exits 1 if any fails.
@@ -31,13 +31,16 @@ and 18 cells, and a refusal naming the study for runs that share both
 """
 
 from checks import check, finish
-from canopyfoam import validation as v
+from canopyfoam.validation_runs import (MESH_DICT, PROPS, REMOVE, Run, SEVEN,
+                                        T10)
+from canopyfoam.validation_tables import (edge_levels_lines, fabric_edge_cells,
+                                          run_setting, study_fineness)
 
 
 def run(ident, edge):
-    return v.Run(ident, v.SEVEN, "synthetic", edits=[
-        (v.MESH_DICT, "cellsPerDiameter", "10"),
-        (v.MESH_DICT, "edgeLengthPerCell", "%g" % edge)])
+    return Run(ident, SEVEN, "synthetic", edits=[
+        (MESH_DICT, "cellsPerDiameter", "10"),
+        (MESH_DICT, "edgeLengthPerCell", "%g" % edge)])
 
 
 def record(cd, resolved=True):
@@ -60,7 +63,7 @@ levels = [run("t-fine", 0.667), run("t-medium", 1.0), run("t-coarse", 1.5)]
 
 def lines(*cds):
     recs = [None if c is None else record(c) for c in cds]
-    return "\n".join(v.edge_levels_lines(list(zip(levels, recs))))
+    return "\n".join(edge_levels_lines(list(zip(levels, recs))))
 
 
 text = lines(0.84, 0.80, 0.70)
@@ -105,48 +108,48 @@ check("one level: no changes",
       "needs two levels run" in text and "- 1.5 to" not in text,
       text.splitlines()[-2])
 
-ten_default = v.Run("t-ten-default", v.T10, "synthetic",
+ten_default = Run("t-ten-default", T10, "synthetic",
                     ["-cellsPerDiameter", "13"])
-ten_fine = v.Run("t-ten-fine", v.T10, "synthetic",
+ten_fine = Run("t-ten-fine", T10, "synthetic",
                  ["-cellsPerDiameter", "13"],
-                 [(v.MESH_DICT, "edgeLengthPerCell", "0.5417")])
+                 [(MESH_DICT, "edgeLengthPerCell", "0.5417")])
 ten_record = record(0.79)
 ten_record["analysis"]["parameters"]["nominalDiameter"]["value"] = 10.7
-text = "\n".join(v.edge_levels_lines([(ten_fine, ten_record),
+text = "\n".join(edge_levels_lines([(ten_fine, ten_record),
                                       (ten_default, ten_record)]))
 rows = text.splitlines()
 check("another tutorial's run takes that tutorial's edge",
-      v.fabric_edge_cells(ten_default) == 1.25
+      fabric_edge_cells(ten_default) == 1.25
       and rows[2].startswith("| 1.25 | 1.029 | t-ten-default |")
       and rows[3].startswith("| 0.5417 | 0.446 | t-ten-fine |"), rows[2:4])
 
 # run_setting: a run's edit of an entry, else the tutorial's value; an
 # edit that removes the entry leaves none
-edited = v.Run("t-until1", v.SEVEN, "synthetic",
-               edits=[(v.PROPS, "fabric/bendingDampingUntil", "1")])
-removed = v.Run("t-throughout", v.SEVEN, "synthetic",
-                edits=[(v.PROPS, "fabric/bendingDampingUntil", v.REMOVE)])
-tutorial = v.Run("t-tutorial", v.SEVEN, "synthetic")
+edited = Run("t-until1", SEVEN, "synthetic",
+               edits=[(PROPS, "fabric/bendingDampingUntil", "1")])
+removed = Run("t-throughout", SEVEN, "synthetic",
+                edits=[(PROPS, "fabric/bendingDampingUntil", REMOVE)])
+tutorial = Run("t-tutorial", SEVEN, "synthetic")
 check("run_setting: the edit's value, none when removed, else the "
       "tutorial's (the 7 ft tutorial's bendingDampingUntil 2)",
-      [v.run_setting(r, v.PROPS, "fabric/bendingDampingUntil")
+      [run_setting(r, PROPS, "fabric/bendingDampingUntil")
        for r in (edited, removed, tutorial)] == [1.0, None, 2.0],
-      [v.run_setting(r, v.PROPS, "fabric/bendingDampingUntil")
+      [run_setting(r, PROPS, "fabric/bendingDampingUntil")
        for r in (edited, removed, tutorial)])
 
-fineness = v.study_fineness("t-edges", [ten_default, ten_fine])
+fineness = study_fineness("t-edges", [ten_default, ten_fine])
 check("study_fineness: the edge's inverse where the cells are shared",
       fineness is not None and abs(fineness(ten_default) - 0.8) < 1e-12
       and abs(fineness(ten_fine) - 1 / 0.5417) < 1e-12,
       fineness and [fineness(ten_default), fineness(ten_fine)])
-coarse = v.Run("t-cpd12", v.SEVEN, "synthetic", ["-cellsPerDiameter", "12"])
-fine = v.Run("t-cpd18", v.SEVEN, "synthetic", ["-cellsPerDiameter", "18"])
+coarse = Run("t-cpd12", SEVEN, "synthetic", ["-cellsPerDiameter", "12"])
+fine = Run("t-cpd18", SEVEN, "synthetic", ["-cellsPerDiameter", "18"])
 check("study_fineness: cells across D0 where they differ",
-      v.study_fineness("t-cells", [coarse, fine]) is None, "None")
+      study_fineness("t-cells", [coarse, fine]) is None, "None")
 try:
-    v.study_fineness("t-markers", [coarse, v.Run(
-        "t-markers", v.SEVEN, "synthetic", ["-cellsPerDiameter", "12"],
-        [(v.PROPS, "coupling/forcing/markerSpacing", "0.0889")])])
+    study_fineness("t-markers", [coarse, Run(
+        "t-markers", SEVEN, "synthetic", ["-cellsPerDiameter", "12"],
+        [(PROPS, "coupling/forcing/markerSpacing", "0.0889")])])
     refusal = None
 except SystemExit as e:
     refusal = str(e)

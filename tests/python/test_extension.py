@@ -1,4 +1,4 @@
-"""test_extension.py — tests of a validation run that goes on from another (Run.extends, prepare_extension and select in python/canopyfoam/validation.py).
+"""test_extension.py — tests of a validation run that goes on from another (Run.extends, prepare_extension and select in python/canopyfoam/validation_execute.py).
 
 Run as:  /usr/bin/python3 tests/python/test_extension.py   (./Alltest extension)
 Prints one PASS/FAIL line per check; exits 1 if any fails.
@@ -19,7 +19,10 @@ import shutil
 import tempfile
 
 from checks import check, finish
-from canopyfoam import validation as v
+from canopyfoam import validation_execute, validation_paths
+from canopyfoam.validation_case import report_json, run_state, wall_time
+from canopyfoam.validation_execute import prepare_extension, select
+from canopyfoam.validation_runs import RUN_BY_ID, SEVEN, Run
 
 
 def write(path, text="x"):
@@ -29,20 +32,20 @@ def write(path, text="x"):
 
 
 tmp = tempfile.mkdtemp()
-saved_root = v.RUN_ROOT
+saved_root = validation_paths.RUN_ROOT
 try:
-    v.RUN_ROOT = tmp
-    source = v.Run("test-source", v.SEVEN, "the source, to 40 s")
-    extension = v.Run("test-extension", v.SEVEN, "the source on to 80 s",
-                      extends="test-source")
-    v.RUN_BY_ID.update({r.ident: r for r in (source, extension)})
+    validation_paths.RUN_ROOT = tmp
+    source = Run("test-source", SEVEN, "the source, to 40 s")
+    extension = Run("test-extension", SEVEN, "the source on to 80 s",
+                    extends="test-source")
+    RUN_BY_ID.update({r.ident: r for r in (source, extension)})
 
-    check("select", v.select(["test-extension"]) ==
+    check("select", select(["test-extension"]) ==
           ["test-source", "test-extension"],
-          "%s (the source first)" % v.select(["test-extension"]))
+          "%s (the source first)" % select(["test-extension"]))
 
     try:
-        v.prepare_extension(extension, 1)
+        prepare_extension(extension, 1)
         refused = False
     except RuntimeError as e:
         refused = "test-source" in str(e) and "missing" in str(e)
@@ -55,22 +58,22 @@ try:
               "system", "postProcessing/canopy/0"):
         write(os.path.join(case, d, "U"))
     write(os.path.join(case, "log.canopyPimpleFoam"), "Time = 40\n\nEnd\n")
-    write(v.report_json(case), "{}")
+    write(report_json(case), "{}")
     write(os.path.join(case, "validation-wall-time"), "123.4 1\n")
     write(os.path.join(case, "validation-code-version"), "abc123\n")
     write(os.path.join(tmp, "test-source.out"), "progress: t = 40\n")
-    check("source complete", v.run_state(source) == "complete",
-          v.run_state(source))
+    check("source complete", run_state(source) == "complete",
+          run_state(source))
 
     try:
-        v.prepare_extension(extension, 2)
+        prepare_extension(extension, 2)
         refused = False
     except RuntimeError as e:
         refused = "-np 1" in str(e)
     check("other ranks", refused and not os.path.exists(extension.case_dir),
           "refused asking for -np 1, no case left")
 
-    latest = v.prepare_extension(extension, 1)
+    latest = prepare_extension(extension, 1)
     out = extension.case_dir
     check("latest write", latest == "40", "goes on from %s" % latest)
     check("copied", all(os.path.exists(os.path.join(out, d, "U"))
@@ -78,31 +81,31 @@ try:
                                   "postProcessing/canopy/0"))
           and not os.path.exists(os.path.join(out, "processor0")),
           "times, mesh and series copied, processor directories not")
-    check("stale report dropped", not os.path.exists(v.report_json(out)),
+    check("stale report dropped", not os.path.exists(report_json(out)),
           "no report.json until the extension ends")
-    check("stopped", v.run_state(extension) == "stopped",
-          "state %s (run --continue goes on)" % v.run_state(extension))
-    check("wall time", v.wall_time(out) == (123.4, 1), "%s" %
-          (v.wall_time(out),))
+    check("stopped", run_state(extension) == "stopped",
+          "state %s (run --continue goes on)" % run_state(extension))
+    check("wall time", wall_time(out) == (123.4, 1), "%s" %
+          (wall_time(out),))
     check("console log", open(os.path.join(tmp, "test-extension.out"))
           .read() == "progress: t = 40\n", "the source's output carried")
 
     def failing(run):
         raise RuntimeError("run %s: cannot set endTime" % run.ident)
-    saved_edits = v.apply_edits
-    v.apply_edits = failing
+    saved_edits = validation_execute.apply_edits
+    validation_execute.apply_edits = failing
     try:
         try:
-            v.prepare_extension(extension, 1)
+            prepare_extension(extension, 1)
             refused = False
         except RuntimeError:
             refused = True
     finally:
-        v.apply_edits = saved_edits
+        validation_execute.apply_edits = saved_edits
     check("failed edit", refused and not os.path.exists(extension.case_dir),
           "the error passed on, no case left")
 finally:
-    v.RUN_ROOT = saved_root
+    validation_paths.RUN_ROOT = saved_root
     shutil.rmtree(tmp)
 
 finish()

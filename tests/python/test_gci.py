@@ -10,11 +10,11 @@ and the extrapolation f0 to the fixed-point iteration's convergence
 where q(p) != 0 and a formula that ignores it misses p by ~0.1. The GCI
 is then Fs |f1 - f2|/|f1| / (r21^p - 1) with Fs = 1.25 (Celik eq. 7).
 Oscillatory and divergent triples fall back to Fs = 3 with the formal
-order; equal cell sizes are refused. validation.resolution_estimates
+order; equal cell sizes are refused. validation_tables.resolution_estimates
 gives the breathing frequency a GCI only when the three levels' peaks
-are one mode (within validation.BREATHING_SAME_MODE of each other).
-validation.two_level_lines gives two runs Roache's Fs = 3 estimate for
-any refinement ratio. validation.scatter_lines pairs each run with its
+are one mode (within validation_tables.BREATHING_SAME_MODE of each other).
+validation_tables.two_level_lines gives two runs Roache's Fs = 3 estimate for
+any refinement ratio. validation_tables.scatter_lines pairs each run with its
 "-splitx" twin: the difference of their means, its ratio to sqrt(2) times
 the larger 95 % half-width, and the pooled scatter rms(d)/sqrt(2).
 """
@@ -28,7 +28,10 @@ ROOT = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, os.path.join(ROOT, "python"))
 sys.path.insert(0, HERE)
 
-from canopyfoam import gci, validation  # noqa: E402
+from canopyfoam import gci  # noqa: E402
+from canopyfoam.validation_runs import Run  # noqa: E402
+from canopyfoam.validation_tables import (  # noqa: E402
+    STUDY_CAVEATS, resolution_estimates, scatter_lines, two_level_lines)
 import test_report as shared  # noqa: E402
 
 
@@ -94,19 +97,19 @@ def test_breathing_modes():
     key = "breathing frequency [Hz]"
     levels = (12, 18, 27)
     one = [(n, fake_record(b)) for n, b in zip(levels, (1.4, 1.6, 1.7))]
-    _, table = validation.resolution_estimates(one, fineness=lambda n: n)
+    _, table = resolution_estimates(one, fineness=lambda n: n)
     shared.check("breathing of one mode has a GCI",
                  key in table and table[key][1] is not None,
                  table.get(key))
     two = [(n, fake_record(b)) for n, b in zip(levels, (25.0, 1.6, 1.4))]
-    _, table = validation.resolution_estimates(two, fineness=lambda n: n)
+    _, table = resolution_estimates(two, fineness=lambda n: n)
     shared.check("breathing peaks 1.4/1.6/25 Hz: listed, no GCI",
                  key in table and table[key][1] is None
                  and table[key][0] == [1.4, 1.6, 25.0]
                  and table["Dp/D0"][1] is not None, table.get(key))
     unresolved = [(n, fake_record(b))
                   for n, b in zip(levels, (1.4, None, 1.7))]
-    _, table = validation.resolution_estimates(unresolved,
+    _, table = resolution_estimates(unresolved,
                                                fineness=lambda n: n)
     shared.check("a level without a breathing peak: no breathing row",
                  key not in table, sorted(table))
@@ -115,9 +118,9 @@ def test_breathing_modes():
 def test_two_levels():
     """Two runs, coarse first: the finer's GCI is 3 |f1 - f2| / |f1| /
     (r - 1) (Roache's Fs = 3, order 1)."""
-    coarse = validation.Run("coarse", "parachutes/flatCircular7ft", "c")
-    fine = validation.Run("fine", "parachutes/flatCircular7ft", "f")
-    lines = validation.two_level_lines(
+    coarse = Run("coarse", "parachutes/flatCircular7ft", "c")
+    fine = Run("fine", "parachutes/flatCircular7ft", "f")
+    lines = two_level_lines(
         [(coarse, fake_record(None, descent=5.0)),
          (fine, fake_record(None, descent=5.5))], "a test", ratio=1.5)
     row = [line for line in lines if line.startswith("| descent")]
@@ -125,7 +128,7 @@ def test_two_levels():
     shared.check("two levels at ratio 1.5: descent GCI %.1f %%" % want,
                  row == ["| descent speed [m/s] | 5.5 | 5 | %.1f %% |"
                          % want], row)
-    lines = validation.two_level_lines(
+    lines = two_level_lines(
         [(coarse, fake_record(None)), (fine, None)], "a test")
     shared.check("two levels with one run missing: no estimate",
                  lines[0].startswith("Two-level estimate: needs both"),
@@ -141,13 +144,13 @@ def test_scatter():
         r["analysis"]["descentVelocity"]["ci95"] = half
         r["analysis"]["dragCoefficient"]["weightBalance"] = cd
         return r
-    runs = [(validation.Run(i, "parachutes/flatCircular7ft", i), r)
+    runs = [(Run(i, "parachutes/flatCircular7ft", i), r)
             for i, r in (("a", rec(5.0, 0.05, 0.80)),
                          ("a-splitx", rec(5.3, 0.10, 0.70)),
                          ("b", rec(6.0, 0.02, 0.60)),
                          ("b-splitx", rec(5.9, 0.02, 0.62)),
                          ("c", rec(7.0, 0.02, 0.50)))]
-    lines = validation.scatter_lines(runs)
+    lines = scatter_lines(runs)
     rows = [line for line in lines if line.startswith("| a |")
             or line.startswith("| b |") or line.startswith("| c |")]
     shared.check("scatter: two pairs, the run without a twin left out",
@@ -164,22 +167,22 @@ def test_scatter():
                  in pooled[0] and ("and %.3f in C_D0" % s_cd) in pooled[0],
                  pooled)
     shared.check("scatter: no pairs, no lines",
-                 validation.scatter_lines(runs[4:]) == [], "")
+                 scatter_lines(runs[4:]) == [], "")
 
 
 def test_caveat():
     """A study's caveat travels with its converged values into a run's
     summary line (report._converged_line), from the committed records."""
     from canopyfoam import report
-    saved = dict(validation.STUDY_CAVEATS)
+    saved = dict(STUDY_CAVEATS)
     try:
-        validation.STUDY_CAVEATS.clear()
+        STUDY_CAVEATS.clear()
         plain = report._converged_line("resolution7ftStiff", 0.8)
-        validation.STUDY_CAVEATS["resolution7ftStiff"] = "a test's caveat"
+        STUDY_CAVEATS["resolution7ftStiff"] = "a test's caveat"
         warned = report._converged_line("resolution7ftStiff", 0.8)
     finally:
-        validation.STUDY_CAVEATS.clear()
-        validation.STUDY_CAVEATS.update(saved)
+        STUDY_CAVEATS.clear()
+        STUDY_CAVEATS.update(saved)
     shared.check("a study without a caveat: one line",
                  plain is not None and "caveat" not in plain, plain)
     shared.check("a study's caveat follows its converged line",

@@ -1,4 +1,4 @@
-"""test_over_window.py — known-answer tests of re-reading records over one common window in python/canopyfoam/validation.py (over_window, study edgeLength7ftCpd27).
+"""test_over_window.py — known-answer tests of re-reading records over one common window in python/canopyfoam/validation_tables.py (over_window, study edgeLength7ftCpd27).
 
 Run as:  /usr/bin/python3 tests/python/test_over_window.py   (./Alltest over_window)
 Prints one PASS/FAIL line per check; exits 1 if any fails.
@@ -17,13 +17,14 @@ the original record is not changed.
 import math
 
 from checks import check, finish
-from canopyfoam import validation as v
+from canopyfoam.validation_runs import MESH_DICT, Run, SEVEN
+from canopyfoam.validation_tables import edge_levels_lines, over_window
 
 
 def run(ident, edge):
-    return v.Run(ident, v.SEVEN, "synthetic", edits=[
-        (v.MESH_DICT, "cellsPerDiameter", "10"),
-        (v.MESH_DICT, "edgeLengthPerCell", "%g" % edge)])
+    return Run(ident, SEVEN, "synthetic", edits=[
+        (MESH_DICT, "cellsPerDiameter", "10"),
+        (MESH_DICT, "edgeLengthPerCell", "%g" % edge)])
 
 
 def record(start, end=12.0):
@@ -46,7 +47,7 @@ def record(start, end=12.0):
 runs = [run("own-5-12", 1.25), run("own-8-12", 0.83), run("short", 0.56),
         run("not-run", 0.4)]
 records = [record(5.0), record(8.0), record(5.0, end=6.0), None]
-out = dict((r.ident, rec) for r, rec in v.over_window(
+out = dict((r.ident, rec) for r, rec in over_window(
     list(zip(runs, records)), 8.0, 12.0))
 
 a = out["own-5-12"]["analysis"]
@@ -75,7 +76,7 @@ check("the original record is unchanged",
       and records[0]["analysis"]["dragCoefficient"]["weightBalance"] == 0.86
       and records[0]["analysis"]["breathing"]["resolved"],
       records[0]["analysis"]["descentVelocity"])
-text = "\n".join(v.edge_levels_lines(v.over_window(
+text = "\n".join(edge_levels_lines(over_window(
     list(zip(runs[:2], records[:2])), 8.0, 12.0)))
 check("the edge table names a peak read over another interval",
       "read over another interval" in text and "1.20 Hz" in text,

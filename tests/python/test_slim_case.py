@@ -1,4 +1,4 @@
-"""test_slim_case.py — tests of slim_case in python/canopyfoam/validation.py (a complete validation run's field writes removed, what its report reads kept).
+"""test_slim_case.py — tests of slim_case in python/canopyfoam/validation_execute.py (a complete validation run's field writes removed, what its report reads kept).
 
 Run as:  /usr/bin/python3 tests/python/test_slim_case.py   (./Alltest slim_case)
 Prints one PASS/FAIL line per check; exits 1 if any fails.
@@ -17,7 +17,7 @@ import shutil
 import tempfile
 
 from checks import check, finish
-from canopyfoam import validation as v
+from canopyfoam.validation_execute import slim_case
 
 
 def write(path, nbytes=1000):
@@ -35,7 +35,7 @@ try:
         write(os.path.join(case, d, "U"))
     write(os.path.join(case, "log.canopyPimpleFoam"))
     write(os.path.join(case, "3"))
-    n, freed = v.slim_case(case)
+    n, freed = slim_case(case)
     left = sorted(os.listdir(case))
     want = sorted(["0", "10", "0.orig", "constant", "system",
                    "postProcessing", "log.canopyPimpleFoam", "3"])
@@ -47,7 +47,7 @@ try:
                                                "polyMesh",
                                                "postProcessing/canopy/0")),
           "files of 1000 bytes")
-    n, freed = v.slim_case(case)
+    n, freed = slim_case(case)
     check("idempotent", n == 0 and freed == 0,
           "%d removed the second time" % n)
 finally:

@@ -1,4 +1,4 @@
-"""test_tilt.py — known-answer tests of the incidence studies' reading in python/canopyfoam/validation.py: tilt_coefficients (a held canopy's force and moment coefficients) and trim_angle.
+"""test_tilt.py — known-answer tests of the incidence studies' reading in python/canopyfoam/validation_tables.py: tilt_coefficients (a held canopy's force and moment coefficients) and trim_angle.
 
 Run as:  /usr/bin/python3 tests/python/test_tilt.py   (./Alltest tilt)
 Prints one PASS/FAIL line per check; exits 1 if any fails.
@@ -18,7 +18,9 @@ the smallest; all positive says none is found. tilt_lines: a row per run
 import math
 
 from checks import check, finish
-from canopyfoam import validation as v
+from canopyfoam.validation_runs import CROSSWIND_T10, Run, T10, TILT_STREAM
+from canopyfoam.validation_tables import (tilt_coefficients, tilt_lines,
+                                          tilt_stream, trim_angle)
 
 
 def analysis(descent=0.0):
@@ -32,9 +34,9 @@ def analysis(descent=0.0):
                            "momentStd": [0.0, 4 * pi, 0.0]}}
 
 
-held = v.Run("test-tilt", v.T10, "synthetic")
-v.TILT_STREAM["test-tilt"] = (4.0, 20.0)
-c = v.tilt_coefficients(held, analysis())
+held = Run("test-tilt", T10, "synthetic")
+TILT_STREAM["test-tilt"] = (4.0, 20.0)
+c = tilt_coefficients(held, analysis())
 want = {"CN": 1.0, "CY": -0.5, "CT": 2.0, "Cm": 2.0, "CNci": 0.1,
         "CmStd": 0.2, "offAxis": math.degrees(math.atan(0.5)),
         "alpha": 20.0}
@@ -42,23 +44,23 @@ check("held: coefficients", all(abs(c[k] - w) < 1e-12 for k, w in
                                 want.items()) and c["CYci"] is None,
       ", ".join("%s %.12g" % (k, c[k]) for k in sorted(want)))
 
-wired = v.Run("test-wind", v.T10, "synthetic")
-v.CROSSWIND_T10["test-wind"] = 3.0
-speed, alpha = v.tilt_stream(wired, analysis(descent=4.0))
+wired = Run("test-wind", T10, "synthetic")
+CROSSWIND_T10["test-wind"] = 3.0
+speed, alpha = tilt_stream(wired, analysis(descent=4.0))
 check("wind: relative wind", abs(speed - 5.0) < 1e-12 and
       abs(alpha - math.degrees(math.atan2(3.0, 4.0))) < 1e-12,
       "%.12g m/s at %.12g°" % (speed, alpha))
-check("wind: no angle before the run", v.tilt_stream(wired) is None,
-      "%s" % (v.tilt_stream(wired),))
+check("wind: no angle before the run", tilt_stream(wired) is None,
+      "%s" % (tilt_stream(wired),))
 
-t = v.trim_angle([(20, -0.03), (0, 0.02), (10, 0.01)])
+t = trim_angle([(20, -0.03), (0, 0.02), (10, 0.01)])
 check("trim: crossing", t == "12.5°", t)
-t = v.trim_angle([(0, 0.01), (10, -0.02), (20, -0.05)])
+t = trim_angle([(0, 0.01), (10, -0.02), (20, -0.05)])
 check("trim: crossing on the first interval", t == "3.3°", t)
-t = v.trim_angle([(0, -0.005), (10, -0.06), (30, -0.15)])
+t = trim_angle([(0, -0.005), (10, -0.06), (30, -0.15)])
 check("trim: restoring everywhere", t.startswith("C_m < 0") and
       "from 10°" in t, t)
-t = v.trim_angle([(0, 0.0), (10, 0.02), (30, 0.05)])
+t = trim_angle([(0, 0.0), (10, 0.02), (30, 0.05)])
 check("trim: none", t == "none between the angles held", t)
 
 # tilt_lines: the table and the trim from two held angles (the moment's
@@ -67,17 +69,17 @@ check("trim: none", t == "none between the angles held", t)
 records = []
 for ident, alpha, my in (("test-tilt-a", 20.0, -40.0), ("test-tilt-b", 40.0,
                                                          40.0)):
-    run = v.Run(ident, v.T10, "synthetic")
-    v.TILT_STREAM[ident] = (4.0, alpha)
+    run = Run(ident, T10, "synthetic")
+    TILT_STREAM[ident] = (4.0, alpha)
     a = analysis()
     a["canopyLoad"]["moment"] = [0.0, my * math.pi, 0.0]
     records.append((run, {"analysis": a, "complete": True,
                           "state": "complete", "wall": 120.0, "ranks": 2},
                     None))
-records.append((v.Run("test-tilt-c", v.T10, "synthetic"), None,
+records.append((Run("test-tilt-c", T10, "synthetic"), None,
                 "not run"))
-v.TILT_STREAM["test-tilt-c"] = (4.0, 60.0)
-lines = v.tilt_lines(records)
+TILT_STREAM["test-tilt-c"] = (4.0, 60.0)
+lines = tilt_lines(records)
 text = "\n".join(lines)
 check("table: a row per run", sum(1 for x in lines if x.startswith(
     "| test-tilt-")) == 3 and "| test-tilt-a | complete | 20.0 | 2.000 | "

@@ -19,7 +19,15 @@ ROOT = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, os.path.join(ROOT, "python"))
 sys.path.insert(0, HERE)
 
-from canopyfoam import validation as val  # noqa: E402
+from canopyfoam import validation_paths as paths  # noqa: E402
+from canopyfoam.validation_case import (report_json,  # noqa: E402
+                                        run_state, running_file,
+                                        solver_log, stopped_file)
+from canopyfoam.validation_execute import terminate_tree  # noqa: E402
+from canopyfoam.validation_report import write_report  # noqa: E402
+from canopyfoam.validation_results import record  # noqa: E402
+from canopyfoam.validation_runs import RUN_BY_ID, RUNS, Run  # noqa: E402
+from canopyfoam.validation_studies import STUDIES  # noqa: E402
 from canopyfoam import validation_archive as archive  # noqa: E402
 import test_report as synthetic  # noqa: E402
 
@@ -36,8 +44,8 @@ def make_case(case_dir):
                         synthetic.DOWN)
     with open(os.path.join(case_dir, "log.canopyPimpleFoam"), "w") as f:
         f.write("Time = 12\n\nEnd\n")
-    os.makedirs(os.path.dirname(val.report_json(case_dir)))
-    with open(val.report_json(case_dir), "w") as f:
+    os.makedirs(os.path.dirname(report_json(case_dir)))
+    with open(report_json(case_dir), "w") as f:
         f.write("{}\n")
     with open(os.path.join(case_dir, "validation-wall-time"), "w") as f:
         f.write("90.0 2\n")
@@ -45,17 +53,17 @@ def make_case(case_dir):
 
 def use_tmp(tmp):
     """Point the validation module at a scratch report and run folder."""
-    val.RUN_ROOT = os.path.join(tmp, "build", "validation")
-    val.FIG_DIR = os.path.join(tmp, "docs", "validation")
-    val.ARCHIVE_DIR = os.path.join(val.FIG_DIR, "runs")
-    val.DOC = os.path.join(tmp, "docs", "validation.md")
+    paths.RUN_ROOT = os.path.join(tmp, "build", "validation")
+    paths.FIG_DIR = os.path.join(tmp, "docs", "validation")
+    paths.ARCHIVE_DIR = os.path.join(paths.FIG_DIR, "runs")
+    paths.DOC = os.path.join(tmp, "docs", "validation.md")
 
 
 def test_record_round_trip(tmp):
-    run = val.Run("synthetic", "parachutes/flatCircular7ft", "synthetic run")
+    run = Run("synthetic", "parachutes/flatCircular7ft", "synthetic run")
     make_case(run.case_dir)
-    rec, why = val.record(run)
-    path = archive.record_path(val.ARCHIVE_DIR, run.ident)
+    rec, why = record(run)
+    path = archive.record_path(paths.ARCHIVE_DIR, run.ident)
     check("a read run is recorded", rec is not None and os.path.exists(path),
           "record %s, why %s, file %s" % (rec is not None, why, path))
     mean = rec["analysis"]["descentVelocity"]["mean"]
@@ -73,7 +81,7 @@ def test_record_round_trip(tmp):
           "%s in the record: %s" % (tmp, tmp in text))
 
     shutil.rmtree(run.case_dir)
-    again, why = val.record(run)
+    again, why = record(run)
     check("without its case the run is read from its record",
           again is not None and again["source"] == "archive"
           and again["analysis"]["descentVelocity"]["mean"] == mean
@@ -83,32 +91,32 @@ def test_record_round_trip(tmp):
               again and again["source"],
               again and again["analysis"]["descentVelocity"]["mean"], why))
 
-    changed = val.Run("synthetic", "parachutes/flatCircular7ft",
+    changed = Run("synthetic", "parachutes/flatCircular7ft",
                       "synthetic run", edits=[("constant/canopyProperties",
                                                "payload/mass", "10")])
-    stale, why = val.record(changed)
+    stale, why = record(changed)
     check("a record of another definition is not used",
           stale is None and "earlier definition" in why, "why: %s" % why)
     return run
 
 
 def test_report_keeps_and_rewrites(run):
-    missing = val.Run("never-run", "parachutes/flatCircular7ft",
+    missing = Run("never-run", "parachutes/flatCircular7ft",
                       "a run made nowhere")
-    val.RUNS[:] = [run, missing]
-    val.RUN_BY_ID.clear()
-    val.RUN_BY_ID.update({r.ident: r for r in val.RUNS})
-    val.STUDIES[:] = [
+    RUNS[:] = [run, missing]
+    RUN_BY_ID.clear()
+    RUN_BY_ID.update({r.ident: r for r in RUNS})
+    STUDIES[:] = [
         ("fromRecord", "Study read from its record", ["synthetic"]),
         ("keptStudy", "Study with a run made nowhere", ["never-run"]),
         ("newStudy", "Study new to the report", ["never-run"])]
-    os.makedirs(os.path.dirname(val.DOC), exist_ok=True)
-    with open(val.DOC, "w") as f:
+    os.makedirs(os.path.dirname(paths.DOC), exist_ok=True)
+    with open(paths.DOC, "w") as f:
         f.write("# Validation\n\n## Study with a run made nowhere\n\n"
                 "| never-run | measured elsewhere: 3.21 ± 0.04 |\n\n"
                 "## Study read from its record\n\nold text\n")
-    val.write_report()
-    doc = open(val.DOC).read()
+    write_report()
+    doc = open(paths.DOC).read()
     kept = doc.split("## Study with a run made nowhere")[1].split("## ")[0]
     check("a study with an unrecorded run keeps its previous section",
           "measured elsewhere: 3.21 ± 0.04" in kept
@@ -124,7 +132,7 @@ def test_report_keeps_and_rewrites(run):
           "not run (`bin/canopy-validate run never-run`)" in new,
           [line for line in new.split("\n") if "never-run" in line][:1])
     check("the plot of a recorded study is drawn",
-          os.path.exists(os.path.join(val.FIG_DIR, "fromRecord.png")),
+          os.path.exists(os.path.join(paths.FIG_DIR, "fromRecord.png")),
           "docs/validation/fromRecord.png")
 
 
@@ -134,40 +142,40 @@ def test_running_run(tmp):
     was stopped (its marker), it is 'stopped', without a record, until
     --continue completes it; a solver log without End and neither file is
     'failed' and is recorded."""
-    run = val.Run("synthetic-running", "parachutes/flatCircular7ft",
+    run = Run("synthetic-running", "parachutes/flatCircular7ft",
                   "synthetic run still going")
     make_case(run.case_dir)
-    with open(val.solver_log(run.case_dir), "w") as f:
+    with open(solver_log(run.case_dir), "w") as f:
         f.write("Time = 6\n")
-    with open(val.running_file(run.case_dir), "w") as f:
+    with open(running_file(run.case_dir), "w") as f:
         f.write("%d\n" % os.getpid())
-    rec, why = val.record(run)
-    path = archive.record_path(val.ARCHIVE_DIR, run.ident)
+    rec, why = record(run)
+    path = archive.record_path(paths.ARCHIVE_DIR, run.ident)
     check("a run whose process is alive is running, without a record",
-          val.run_state(run) == "running" and rec is None
+          run_state(run) == "running" and rec is None
           and why.startswith("running") and not os.path.exists(path),
-          "state %s, record %s, why %s" % (val.run_state(run), rec, why))
+          "state %s, record %s, why %s" % (run_state(run), rec, why))
     gone = subprocess.Popen(["true"])
     gone.wait()
-    with open(val.running_file(run.case_dir), "w") as f:
+    with open(running_file(run.case_dir), "w") as f:
         f.write("%d\n" % gone.pid)
-    rec, why = val.record(run)
+    rec, why = record(run)
     check("a run whose process has gone is stopped, without a record",
-          val.run_state(run) == "stopped" and rec is None
+          run_state(run) == "stopped" and rec is None
           and why.startswith("stopped at t = 6 s")
           and not os.path.exists(path),
-          "state %s, record %s, why %s" % (val.run_state(run), rec, why))
-    os.remove(val.running_file(run.case_dir))
-    with open(val.stopped_file(run.case_dir), "w") as f:
+          "state %s, record %s, why %s" % (run_state(run), rec, why))
+    os.remove(running_file(run.case_dir))
+    with open(stopped_file(run.case_dir), "w") as f:
         f.write("stopped\n")
     check("a run marked stopped is stopped",
-          val.run_state(run) == "stopped", "state %s" % val.run_state(run))
-    os.remove(val.stopped_file(run.case_dir))
-    rec, why = val.record(run)
+          run_state(run) == "stopped", "state %s" % run_state(run))
+    os.remove(stopped_file(run.case_dir))
+    rec, why = record(run)
     check("a solver log without End and no marker: failed, recorded",
-          val.run_state(run) == "failed" and rec is not None
+          run_state(run) == "failed" and rec is not None
           and not rec["complete"] and os.path.exists(path),
-          "state %s, record %s" % (val.run_state(run), rec is not None))
+          "state %s, record %s" % (run_state(run), rec is not None))
     os.remove(path)
     shutil.rmtree(run.case_dir)
 
@@ -181,7 +189,7 @@ def test_terminate_tree():
     kids = [int(p) for p in subprocess.run(
         ["pgrep", "-P", str(shell.pid)], capture_output=True,
         text=True).stdout.split()]
-    val.terminate_tree(shell.pid)
+    terminate_tree(shell.pid)
     shell.wait(timeout=10)
     time.sleep(0.3)
     alive = [k for k in kids if os.path.exists("/proc/%d" % k)

@@ -7,13 +7,13 @@ Usage: python3 figures.py mainjob <case dir> <wall seconds>
 Prints BENCH lines (name value unit) and '# ' comment lines.
 
 mainjob: C_D0 of the case over the main job's own interval (the steady
-interval of validation.MAIN_JOB_RUN in python/canopyfoam/validation.py,
+interval of MAIN_JOB_RUN in python/canopyfoam/validation_runs.py,
 the one its Allrun's report reads), against the converged value of
 the study the 7 ft reference names (report.py's convergedStudy: its
 finest run and GCI, bin/canopy-validate converged <study>, from the
 committed records); then both over that interval, when the finest run
 is in build/validation and its series covers it. Without a case: the
-main job's run of bin/canopy-validate (validation.MAIN_JOB_RUN in
+main job's run of bin/canopy-validate (validation_runs.MAIN_JOB_RUN in
 build/validation, its wall time from mesh to report as the validation
 run measured it), for a report made without the benchmark's own run.
 
@@ -28,7 +28,7 @@ record (docs/validation/runs), which holds the whole run's wall time and
 steps (so its cost per step includes the meshing and the start) and the
 coupling iterations over its own steady interval; a comment line says
 so. A source run the study also lists (one whose start differs from the
-first run's: validation.study_levels) is left out.
+first run's: validation_tables.study_levels) is left out.
 """
 
 import os
@@ -40,7 +40,14 @@ TOP = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(
 sys.path.insert(0, os.path.join(TOP, "python"))
 
 from canopyfoam import report as rep          # noqa: E402
-from canopyfoam import validation as val      # noqa: E402
+from canopyfoam import validation_archive as archive  # noqa: E402
+from canopyfoam.validation_case import (cell_count, run_state,  # noqa: E402
+                                        solver_log, wall_time)
+from canopyfoam.validation_paths import ARCHIVE_DIR  # noqa: E402
+from canopyfoam.validation_runs import MAIN_JOB_RUN, RUN_BY_ID  # noqa: E402
+from canopyfoam.validation_studies import STUDIES  # noqa: E402
+from canopyfoam.validation_tables import (cells_per_diameter,  # noqa: E402
+                                          converged, study_levels)
 
 STUDY = rep.REFERENCES["7ft"]["convergedStudy"]
 
@@ -48,12 +55,12 @@ STUDY = rep.REFERENCES["7ft"]["convergedStudy"]
 def interval(study=STUDY):
     """The interval every level of a study is read over (its first
     run's)."""
-    run = val.RUN_BY_ID[dict((s[0], s[2]) for s in val.STUDIES)[study][0]]
+    run = RUN_BY_ID[dict((s[0], s[2]) for s in STUDIES)[study][0]]
     return run.steady_start, run.steady_end
 
 
 def main_job(case_dir, wall):
-    job = val.RUN_BY_ID[val.MAIN_JOB_RUN]
+    job = RUN_BY_ID[MAIN_JOB_RUN]
     t0, t1 = job.steady_start, job.steady_end
     a = rep.analyse(case_dir, steady_start=t0, steady_end=t1)
     cd0 = a["dragCoefficient"]["weightBalance"]
@@ -63,7 +70,7 @@ def main_job(case_dir, wall):
     print("BENCH parachute_main_job_C_D0 %.4f" % cd0)
     study = rep.REFERENCES["7ft"]["convergedStudy"]
     try:
-        conv = val.converged(study)["C_D0 (weight)"]
+        conv = converged(study)["C_D0 (weight)"]
     except SystemExit as e:
         print("# no converged value: %s" % e)
         return
@@ -76,8 +83,8 @@ def main_job(case_dir, wall):
           % ((cd0 - ref) / ref))
     # The same comparison with the finest level read over the main job's
     # interval too
-    finest = val.RUN_BY_ID[conv["runs"][0]]
-    if val.run_state(finest) != "complete":
+    finest = RUN_BY_ID[conv["runs"][0]]
+    if run_state(finest) != "complete":
         print("# %s not in build/validation: no comparison over %g-%g s"
               % (finest.ident, t0, t1))
         return
@@ -96,9 +103,9 @@ def main_job(case_dir, wall):
 def main_job_validation():
     """main_job on the main job's validation run, when it is complete in
     build/validation."""
-    job = val.RUN_BY_ID[val.MAIN_JOB_RUN]
-    wall, ranks = val.wall_time(job.case_dir)
-    if val.run_state(job) != "complete" or wall is None:
+    job = RUN_BY_ID[MAIN_JOB_RUN]
+    wall, ranks = wall_time(job.case_dir)
+    if run_state(job) != "complete" or wall is None:
         print("# the main job's validation run is not in build/validation "
               "(bin/canopy-validate run %s)" % job.ident)
         return
@@ -130,22 +137,22 @@ def step_costs(log, t0, t1):
 
 def levels(study=STUDY):
     t0, t1 = interval(study)
-    ids = dict((s[0], s[2]) for s in val.STUDIES)[study]
-    for run, _ in val.study_levels([(val.RUN_BY_ID[i], None) for i in ids]):
+    ids = dict((s[0], s[2]) for s in STUDIES)[study]
+    for run, _ in study_levels([(RUN_BY_ID[i], None) for i in ids]):
         ident = run.ident
-        n = val.cells_per_diameter(run)
-        log = val.solver_log(run.case_dir)
-        if val.run_state(run) == "complete":
+        n = cells_per_diameter(run)
+        log = solver_log(run.case_dir)
+        if run_state(run) == "complete":
             cost, steps, first, last = step_costs(log, t0, t1)
             series = rep.load_case(run.case_dir)
             m = (series.t >= t0) & (series.t <= t1)
             its = series.column("coupling_iterations")[m].mean()
-            cells = val.cell_count(run.case_dir)
+            cells = cell_count(run.case_dir)
             print("# %s: %d cells, cost per step over the solver log's %d "
                   "steps in %.4g-%.4g s; iterations over %g-%g s"
                   % (ident, cells, steps, first, last, t0, t1))
         else:
-            record, why = val.archive.load(val.ARCHIVE_DIR, run)
+            record, why = archive.load(ARCHIVE_DIR, run)
             if record is None or not record["complete"]:
                 print("# %s: not in build/validation and %s (bin/canopy-"
                       "validate run %s)" % (ident, why or "incomplete",
