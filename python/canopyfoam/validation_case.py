@@ -1,6 +1,5 @@
 """validation_case.py — a validation run's case directory: its state (missing, running, stopped, failed, complete), solver log, latest time, wall time and the code version it ran with."""
 
-import math
 import os
 import re
 import subprocess
@@ -79,15 +78,6 @@ def foam_get(path, entry):
         raise RuntimeError("%s has no entry %s: %s"
                            % (path, entry, out.stderr.strip()))
     return out.stdout.strip()
-
-
-def _time_name(name):
-    """The time a directory's name spells, or None."""
-    try:
-        value = float(name)
-    except ValueError:
-        return None
-    return value if math.isfinite(value) else None
 
 
 def wall_time(case_dir):

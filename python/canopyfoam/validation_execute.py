@@ -1,5 +1,6 @@
 """validation_execute.py — a validation run's case prepared (a copy of its tutorial with its edits, or a run it extends at its latest write), run, continued and slimmed once complete."""
 
+import math
 import os
 import shutil
 import signal
@@ -13,9 +14,18 @@ from .validation_runs import (NARROW_BLOCK_MESH, NARROW_BOX_ENTRY, REMOVE,
                               REST_STATE, RUNS, RUN_BY_ID,
                               SOURCE_PAYLOAD_VELOCITY)
 from .validation_studies import STUDIES
-from .validation_case import (_time_name, foam_get, record_code_version,
+from .validation_case import (foam_get, record_code_version,
                               report_json, run_state, running_file,
                               stopped_file, wall_time)
+
+
+def _time_name(name):
+    """The time a directory's name spells, or None."""
+    try:
+        value = float(name)
+    except ValueError:
+        return None
+    return value if math.isfinite(value) else None
 
 
 def terminate_tree(pid):
