@@ -156,6 +156,11 @@ STUDIES = [
      "80 s, and 27, from rest to 40 s going on to 80 s, read over 40-80 s",
      ["7ft-cpd%d-damped-80s" % n for n in (12, 18)]
      + ["7ft-cpd27-markerhalf-loss0.02-80s"]),
+    ("gores7ft", "7 ft canopy on the guide wire, the tutorial as it is "
+     "(nylon's damping, loss factor 0.02 at 2 Hz): 16 gores and lines (the "
+     "drop test's canopy) against 32, at 18 cells across D0 (box 8 D0 "
+     "wide; from rest to 40 s, read over 10-40 s)",
+     ["7ft-cpd18-markerhalf-loss0.02-40s", "7ft-cpd18-gores32-40s"]),
     ("turbulence7ftDamped", "7 ft canopy on the guide wire, the tutorial "
      "as it is (nylon's damping, loss factor 0.02 at 2 Hz): laminar against "
      "LES (WALE, LUST convection) at 12 cells across D0 (the main job's "
