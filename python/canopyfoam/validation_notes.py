@@ -2051,6 +2051,76 @@ LEVELS_DAMPED_PROSE = [
     "Roache's three-level GCI over 40-80 s, the window the main job's "
     "30-70 s nearly matches.", ""]
 
+# What sets the 7 ft canopy's inflated shape: the cloth's stress by ring,
+# the skirt's scallops between the lines, and 32 gores against 16 (study
+# gores7ft; issue 34 item 1)
+GORES_PROSE = [
+    "**The cloth's stress and the skirt** (python/canopyfoam/"
+    "cloth_stress.py, `python3 -m canopyfoam.cloth_stress "
+    "build/validation/<run> T0 T1` from python/: the membrane stress by "
+    "ring from the springs' tensions, meridional σ_mm and hoop σ_hh in "
+    "N/m, and the skirt's radius at the lines and between them). The "
+    "summaries' Dp/D0 is canopy.dat's projected diameter, twice the "
+    "cloth's largest radius about the axis; the silhouette's diameter "
+    "(the table above) is that of the circle of the area the cloth covers "
+    "seen along the axis. On the tutorial's 16 gores the largest radius "
+    "lies on the hem midway between two lines (as the radial tapes' "
+    "section found over 8-12 s on an earlier set-up). At 12 and 18 cells "
+    "over "
+    "40-80 s (7ft-cpd12-damped-80s, 7ft-cpd18-damped-80s) and at 27 over "
+    "20-40 s (7ft-cpd27-markerhalf-loss0.02-40s) the lines are attached "
+    "at 0.701, 0.709 and 0.690 R0 and the hem between them reaches 0.805, "
+    "0.811 and 0.812 R0; a taut hem, its rest length a gore (2π R0/16), "
+    "arcing outward between the attachments reaches 0.805, 0.812 and "
+    "0.796 R0. The hem is taut: the outer ring carries 4.3-6.6 N/m in hoop "
+    "against 9.6-10.7 N/m meridional. Inwards the cloth is biaxial at the "
+    "crown (σ_hh 15-21 N/m against σ_mm 16-36 within s < 0.2) and "
+    "beyond carries 5-75 % of its meridional stress in hoop (ring means), "
+    "so r σ_mm grows from 2-4 N at the crown to 7.7-8.5 N at the skirt. "
+    "Tension-field "
+    "theory (tension_field_shape.py, lines of 1 D0, section \"The cloth's "
+    "stiffness in compression\") has no hoop stress and r σ_mm constant, "
+    "and puts the attachments at 0.657 R0, 5-8 % inside the runs'.", "",
+    "**32 gores** (7ft-cpd18-gores32-40s: `canopy.nAttachments 32`, "
+    "`lines.number 32`, otherwise the 18-cell level of study "
+    "resolution7ftDamped). Predicted before the run, for attachments "
+    "where the 16 gores have them (0.698 R0 over 10-40 s) and a taut hem "
+    "arcing between them: its tips at 0.753 R0 and its outline 0.739 D0 "
+    "across, which at 16 gores lies 0.02-0.03 D0 outside the silhouette, "
+    "so a silhouette near 0.71 D0. The run cannot test that: a ring's "
+    "node count is a multiple of the gores, and at this fabric edge the "
+    "builder gives the skirt 32 nodes (the 16-gore cloth has 48), so "
+    "every skirt node is an attachment and the hem between two lines is "
+    "one spring that cannot arc; the cloth is coarser too (324 triangles, "
+    "mean edge 0.168 m, against 368 and 0.153 m). What it shows is the "
+    "skirt without its scallops: over 10-40 s the attachments stand at "
+    "0.738 R0, the largest radius is 0.747 R0 (Dp/D0 0.749 against "
+    "0.798), the hem is slack (the outer two rings carry 0.03-0.04 N/m in "
+    "hoop, 64-72 % of their triangles wrinkled, against 5.8-6.4 N/m with "
+    "16 gores), and the silhouette holds at 0.740 D0 against 0.751. C_D0 "
+    "0.824 against 0.839 (-1.8 %, inside the pair's ±3.0 % and ±4.7 %), "
+    "the descent 5.71 against 5.57 m/s with the 16 more lines' 0.17 kg "
+    "(3.0 % of the weight), still slowing (drift -0.44 m/s against "
+    "-0.23), breathing at 1.44 Hz with 5.6 cm against 1.19 Hz with 1.6 "
+    "cm; 39 minutes on 2 ranks against 23. The 32-gore canopy with its "
+    "hem free to arc needs 64 skirt nodes, a fabric edge of about 0.1 m "
+    "(the 27-cell level's 0.099 m, or 18 cells with "
+    "`edgeLengthPerCell` 0.83 in system/canopyMeshDict): not yet run.", "",
+    "**What this shows.** The 16-gore canopy's Dp/D0 of 0.80-0.81 is the "
+    "taut hem's scallops between its lines, not the cloth's opening: "
+    "without them (32 one-edge gores) it reads 0.75. The silhouette, "
+    "0.74-0.76 D0 at 12, 18 and 27 cells and 0.74 without the scallops, "
+    "is the measure that holds, and it stands 6-13 % wider than the "
+    "handbook's Dp/D0 of 0.67-0.70 for flat circular canopies (Knacke, "
+    "Table 5-1). The model's canopy is wider than tension-field theory "
+    "where the theory leaves out the crown's biaxial stress: near the "
+    "apex the cloth is not gathered (r ≈ s R0) and, pressurized, carries "
+    "hoop stress, which flattens the crown and carries the attachments "
+    "out. Not yet measured: whether the crown's biaxial region and the "
+    "attachments' radius converge in the structure's resolution, and the "
+    "pressure jump's fall from crown to skirt, which the theory takes "
+    "uniform.", ""]
+
 # What the markers half a cell apart do to the T-10's mapped levels
 # (study markersT10)
 MARKERS_T10_PROSE = [
@@ -2382,6 +2452,7 @@ TUTORIAL_STUDY_PROSE = {
     "damping7ftTutorial": DAMPING_7FT_TUTORIAL_PROSE,
     "resolution7ftDamped": RESOLUTION_DAMPED_PROSE,
     "levels7ftDamped": LEVELS_DAMPED_PROSE,
+    "gores7ft": GORES_PROSE,
     "markersT10": MARKERS_T10_PROSE,
     "dashpotsT10": DASHPOTS_T10_PROSE,
     "markersT10Tutorial": MARKERS_T10_TUTORIAL_PROSE,

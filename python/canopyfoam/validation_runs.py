@@ -2657,11 +2657,12 @@ RUNS += [
         reference="C9", steady_start=60, steady_end=120)]
 # The 7 ft canopy with 32 gores and lines instead of its 16 (issue 34 item
 # 1): between two lines the taut hem arcs out to the canopy's largest
-# radius, and its outline sets the silhouette (cloth_stress.py); with
+# radius, and its outline bounds the silhouette (cloth_stress.py); with
 # narrower gores the arcs shrink towards the attachments' circle. The
 # 18-cell level against 7ft-cpd18-markerhalf-loss0.02-40s, the same
-# set-up with 16 (its writes every 0.25 s too); at 18 cells the skirt
-# holds two fabric edges a gore, as the 12-cell level does with 16
+# set-up with 16 (its writes every 0.25 s too). At this fabric edge the
+# skirt gets 32 nodes, one hem spring a gore that cannot arc: the run
+# shows the skirt without its scallops
 RUNS += [
     Run("7ft-cpd18-gores32-40s", SEVEN, "box 8 D0 wide, 18 cells across "
         "D0, the tutorial as it is with 32 gores and lines "
