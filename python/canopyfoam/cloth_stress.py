@@ -298,12 +298,21 @@ def main():
         print(__doc__.split("\n")[0])
         print("usage: python3 -m canopyfoam.cloth_stress CASE T0 T1 [RINGS]")
         return 2
-    case_dir, t0, t1 = sys.argv[1], float(sys.argv[2]), float(sys.argv[3])
-    rings = int(sys.argv[4]) if len(sys.argv) > 4 else 10
+    try:
+        case_dir, t0, t1 = sys.argv[1], float(sys.argv[2]), \
+            float(sys.argv[3])
+        rings = int(sys.argv[4]) if len(sys.argv) > 4 else 10
+    except ValueError as e:
+        print("cloth_stress: T0 and T1 are times in s, RINGS a whole "
+              "number: %s" % e, file=sys.stderr)
+        return 2
+    if rings < 1:
+        print("cloth_stress: RINGS must be at least 1", file=sys.stderr)
+        return 2
     try:
         a = analyse(case_dir, t0, t1, rings)
     except (ClothStressError, shape.ShapeError) as e:
-        print("cloth_stress: %s" % e, file=sys.stderr)
+        print("cloth_stress: %s: %s" % (case_dir, e), file=sys.stderr)
         return 1
     r0 = a["restRadius"]
     print("%s over %g-%g s (%d states): the cloth's stress by ring of s "
