@@ -180,10 +180,7 @@ def taut_hem_radius(r_attach, gores, hem_length):
     """The outermost radius of a taut hem of length hem_length between
     neighbouring attachments at radius r_attach of `gores` lines, bulging
     outward in the skirt's plane as a circular arc (module header)."""
-    if gores < 3 or not r_attach > 0 or not hem_length > 0:
-        raise ValueError("taut_hem_radius needs gores >= 3 and positive "
-                         "lengths")
-    chord, theta, rho = _hem_arc(r_attach, gores, hem_length)
+    _, theta, rho = _hem_arc(r_attach, gores, hem_length)
     inner = r_attach * math.cos(math.pi / gores)
     if theta == 0.0:
         return inner
@@ -193,6 +190,9 @@ def taut_hem_radius(r_attach, gores, hem_length):
 def _hem_arc(r_attach, gores, hem_length):
     """(chord, half-angle theta, arc radius) of the taut hem between two
     attachments; theta 0 for a hem no longer than its chord."""
+    if gores < 3 or not r_attach > 0 or not hem_length > 0:
+        raise ValueError("a taut hem needs gores >= 3 and positive "
+                         "lengths")
     chord = 2.0 * r_attach * math.sin(math.pi / gores)
     ratio = hem_length / chord
     if ratio <= 1.0:
@@ -213,9 +213,6 @@ def taut_hem_outline_diameter(r_attach, gores, hem_length):
     the polygon of the attachments plus the taut hem's circular segments
     between them, (gores / 2) r_a^2 sin(2 pi / gores) + gores rho^2
     (theta - sin theta cos theta)."""
-    if gores < 3 or not r_attach > 0 or not hem_length > 0:
-        raise ValueError("taut_hem_outline_diameter needs gores >= 3 and "
-                         "positive lengths")
     _, theta, rho = _hem_arc(r_attach, gores, hem_length)
     area = 0.5 * gores * r_attach ** 2 * math.sin(2.0 * math.pi / gores)
     if theta > 0.0:
