@@ -1,4 +1,4 @@
-"""checks.py — what the python tests share: the repository's python/ on the import path, one PASS/FAIL line per check, and the exit status."""
+"""checks.py — what the python tests share: the repository's python/ on the import path, one PASS/FAIL line per check, a synthetic canopy.h5, and the exit status."""
 
 import os
 import sys
@@ -31,3 +31,24 @@ def finish():
     """Print the count of failed checks and exit 1 if there are any."""
     print("%d failed" % len(failures))
     sys.exit(1 if failures else 0)
+
+
+def write_canopy_h5(path, groups, triangles, springs, rest, spring_groups,
+                    states):
+    """Write a canopy.h5 at path with the mesh and, per state, a group
+    steps/NNNNNN holding the time attribute and the state's datasets;
+    states is a list of (time, {name: array}). Needs h5py."""
+    import h5py
+    import numpy as np
+    with h5py.File(path, "w") as f:
+        m = f.create_group("mesh")
+        m["node_group"] = np.asarray(groups).astype(np.int32)
+        m["triangles"] = np.asarray(triangles).astype(np.int32)
+        m["springs"] = np.asarray(springs).astype(np.int32)
+        m["spring_rest_length"] = rest
+        m["spring_group"] = np.asarray(spring_groups).astype(np.int32)
+        for k, (t, data) in enumerate(states):
+            g = f.create_group("steps/%06d" % k)
+            g.attrs["time"] = t
+            for name, value in data.items():
+                g[name] = value

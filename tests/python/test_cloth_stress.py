@@ -39,7 +39,7 @@ import tempfile
 
 import numpy as np
 
-from checks import check, finish, refused
+from checks import check, finish, refused, write_canopy_h5
 from canopyfoam import cloth_stress, shape, tension_field_shape
 from canopyfoam.canopy_h5 import GROUP_LINE, GROUP_PAYLOAD
 
@@ -218,21 +218,12 @@ if h5py is not None:
     tmp = tempfile.mkdtemp(prefix="test_cloth_stress.")
     try:
         os.makedirs(os.path.join(tmp, "postProcessing", "canopy"))
-        with h5py.File(shape.h5_path(tmp), "w") as f:
-            m = f.create_group("mesh")
-            m["node_group"] = groups.astype(np.int32)
-            m["triangles"] = tris.astype(np.int32)
-            m["springs"] = springs.astype(np.int32)
-            m["spring_rest_length"] = rest
-            m["spring_group"] = sgroups.astype(np.int32)
-            # t = 1: spokes at T; t = 2: spokes at 3 T; t = 3: outside
-            for k, (t, tension) in enumerate(((1.0, spokes),
-                                              (2.0, 3 * spokes),
-                                              (3.0, 10 * spokes))):
-                g = f.create_group("steps/%06d" % k)
-                g.attrs["time"] = t
-                g["x"] = x0
-                g["tension"] = tension
+        # t = 1: spokes at T; t = 2: spokes at 3 T; t = 3: outside
+        write_canopy_h5(shape.h5_path(tmp), groups, tris, springs, rest,
+                        sgroups, [(t, {"x": x0, "tension": tension})
+                                  for t, tension in ((1.0, spokes),
+                                                     (2.0, 3 * spokes),
+                                                     (3.0, 10 * spokes))])
         a = cloth_stress.analyse(tmp, 0.5, 2.5, N)
         e_mm = worst(a["rows"], 2, 2 * mm)
         hem = M * chord[N]

@@ -36,24 +36,14 @@ without canopy.h5 gives a report whose shape is "not read".
 import math
 import os
 import shutil
-import sys
 import tempfile
 
 import numpy as np
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "..", "python"))
-
-from canopyfoam import shape  # noqa: E402
+from checks import check, finish, write_canopy_h5
+from canopyfoam import shape
 
 N, M, R = 20, 16, 1.0
-failures = []
-
-
-def check(name, ok, detail):
-    print("%s %s: %s" % ("PASS" if ok else "FAIL", name, detail))
-    if not ok:
-        failures.append(name)
 
 
 def polar_mesh(first_ring=0):
@@ -214,19 +204,11 @@ if h5py is not None:
     tmp = tempfile.mkdtemp(prefix="test_shape.")
     try:
         os.makedirs(os.path.join(tmp, "postProcessing", "canopy"))
-        with h5py.File(shape.h5_path(tmp), "w") as f:
-            m = f.create_group("mesh")
-            m["node_group"] = groups.astype(np.int32)
-            m["triangles"] = tris.astype(np.int32)
-            m["springs"] = springs.astype(np.int32)
-            m["spring_rest_length"] = rest
-            m["spring_group"] = sgroups.astype(np.int32)
-            # t = 1: flat; t = 2 and 3: the cap; t = 4: folded
-            for k, (t, x) in enumerate(((1.0, x0), (2.0, cap), (3.0, cap),
-                                        (4.0, folded))):
-                g = f.create_group("steps/%06d" % k)
-                g.attrs["time"] = t
-                g["x"] = x
+        # t = 1: flat; t = 2 and 3: the cap; t = 4: folded
+        write_canopy_h5(shape.h5_path(tmp), groups, tris, springs, rest,
+                        sgroups, [(t, {"x": x}) for t, x in
+                                  ((1.0, x0), (2.0, cap), (3.0, cap),
+                                   (4.0, folded))])
         a = shape.analyse(tmp, 1.5, 3.5)
         check("h5: interval's states averaged",
               a["states"] == 2 and abs(a["crownHeight"] - crown) < 1e-12,
@@ -251,5 +233,4 @@ if h5py is not None:
     finally:
         shutil.rmtree(tmp)
 
-print("%d failed" % len(failures))
-sys.exit(1 if failures else 0)
+finish()

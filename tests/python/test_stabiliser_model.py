@@ -20,24 +20,12 @@ k = m + m_a = 1, c = mu a from the previous iteration):
 """
 
 import math
-import os
-import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
-                                "..", "..", "python"))
-from canopyfoam.stabiliser_model import (amplification,  # noqa: E402
-                                         first_unstable_theta, step_matrix)
-
-failures = 0
-
-
-def check(name, ok, detail):
-    global failures
-    print("%s  %s: %s" % ("PASS" if ok else "FAIL", name, detail))
-    if not ok:
-        failures += 1
+from checks import check, finish
+from canopyfoam.stabiliser_model import (amplification, first_unstable_theta,
+                                         step_matrix)
 
 
 # K = 1 with predictor zero: the exact oscillator, neutral for every theta
@@ -95,5 +83,4 @@ worst = max(amplification(t, 0.935, 200, balance="stepMean")
 check("a converged step-mean balance grows", worst > 2.0,
       "largest amplification with 200 iterations %.3f" % worst)
 
-print("%d failure(s)" % failures)
-sys.exit(1 if failures else 0)
+finish()

@@ -30,27 +30,16 @@ Exact answers:
 import math
 import os
 import shutil
-import sys
 import tempfile
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
-                                "..", "..", "python"))
-from canopyfoam import shape  # noqa: E402
-from canopyfoam.tension_field_shape import (canopy, compare,  # noqa: E402
-                                            mylar_balloon)
+from checks import check, finish, write_canopy_h5
+from canopyfoam import shape
+from canopyfoam.tension_field_shape import canopy, compare, mylar_balloon
 
 A = 1.3110287771
 B = 0.5990701173
-failures = 0
-
-
-def check(name, ok, detail):
-    global failures
-    print("%s  %s: %s" % ("PASS" if ok else "FAIL", name, detail))
-    if not ok:
-        failures += 1
 
 
 m = mylar_balloon()
@@ -128,16 +117,9 @@ else:
     tmp = tempfile.mkdtemp(prefix="test_tension_field_shape.")
     try:
         os.makedirs(os.path.join(tmp, "postProcessing", "canopy"))
-        with h5py.File(shape.h5_path(tmp), "w") as f:
-            m = f.create_group("mesh")
-            m["node_group"] = groups
-            m["triangles"] = np.array(tris, dtype=np.int32)
-            m["springs"] = springs
-            m["spring_rest_length"] = lengths
-            m["spring_group"] = np.zeros(len(springs), dtype=np.int32)
-            g = f.create_group("steps/000000")
-            g.attrs["time"] = 1.0
-            g["x"] = placed
+        write_canopy_h5(shape.h5_path(tmp), groups, tris, springs, lengths,
+                        np.zeros(len(springs), dtype=np.int32),
+                        [(1.0, {"x": placed})])
         rows = compare(tmp, 0.0, 2.0)
         worst_r = max(abs(row[2] - row[3]) for row in rows)
         worst_z = max(abs(row[5] - row[6]) for row in rows)
@@ -148,5 +130,4 @@ else:
     finally:
         shutil.rmtree(tmp)
 
-print("%d failure(s)" % failures)
-sys.exit(1 if failures else 0)
+finish()
