@@ -19,7 +19,10 @@ What it checks. Tension-field theory (tension_field_shape.py) takes the
 gathered cloth to carry no hoop stress, sigma_hh = 0, and the meridional
 stress to fall as 1/r, r sigma_mm = C, the canopy's drag over 2 pi. The
 ring table gives both, with the fraction of the ring's triangles whose
-hoop stress is below a tenth of their meridional one (wrinkled).
+hoop stress is below a tenth of their meridional one (wrinkled). The
+theory also takes the pressure jump across the cloth as uniform; the
+table gives each ring's area-weighted mean of the jump the solver handed
+the cloth (canopy.h5's dp, one value a triangle) beside the cloth's mean.
 
 The scallops. Between two lines the skirt's hem (rest length L a gore)
 spans a chord c = 2 r_a sin(pi / N) between attachments at radius r_a.
@@ -166,6 +169,28 @@ def ring_stress(mesh, cloth_springs, x, tension, edges):
     return rows
 
 
+def ring_pressure_jump(mesh, x, dp, edges):
+    """Per ring [edges[k], edges[k+1]) of the triangles' mean s, the
+    area-weighted mean of the pressure jump dp (one value a triangle) [Pa];
+    nan for an empty ring."""
+    dp = np.asarray(dp, dtype=float)
+    if dp.shape != (len(mesh.triangles),):
+        raise ClothStressError("the pressure jump has %d values for %d "
+                               "triangles" % (dp.size, len(mesh.triangles)))
+    tx = np.asarray(x, dtype=float)[mesh.triangles]
+    area = 0.5 * np.linalg.norm(np.cross(tx[:, 1] - tx[:, 0],
+                                         tx[:, 2] - tx[:, 0]), axis=1)
+    tri_s = mesh.s[mesh.triangles].mean(axis=1)
+    ring = np.clip(np.searchsorted(edges, tri_s, side="right") - 1, 0,
+                   len(edges) - 2)
+    out = []
+    for k in range(len(edges) - 1):
+        sel = ring == k
+        out.append(float((dp[sel] * area[sel]).sum() / area[sel].sum())
+                   if sel.any() else float("nan"))
+    return out, float((dp * area).sum() / area.sum())
+
+
 def skirt_scallops(mesh, cloth_springs, x):
     """(attachments' mean radius, the largest skirt radius between them)
     of a state x, from the axis."""
@@ -222,8 +247,9 @@ def taut_hem_outline_diameter(r_attach, gores, hem_length):
 
 
 def read_states(case_dir, t0, t1):
-    """(mesh, ClothSprings, [(time, x, tension), ...]) of the states of
-    canopy.h5 written in [t0, t1]."""
+    """(mesh, ClothSprings, [(time, x, tension, dp), ...]) of the states
+    of canopy.h5 written in [t0, t1]; dp (the pressure jump a triangle) is
+    None where the file does not hold it."""
     try:
         with canopy_h5.open_file(case_dir, ClothStressError) as f:
             m = f["mesh"]
@@ -236,7 +262,9 @@ def read_states(case_dir, t0, t1):
                 step = f["steps"][name]
                 t = float(step.attrs["time"])
                 if t0 - 1e-9 <= t <= t1 + 1e-9:
-                    states.append((t, step["x"][:], step["tension"][:]))
+                    states.append((t, step["x"][:], step["tension"][:],
+                                   step["dp"][:] if "dp" in step
+                                   else None))
     except (OSError, KeyError) as e:
         raise ClothStressError("%s: %s" % (canopy_h5.path(case_dir), e))
     if not states:
@@ -247,7 +275,9 @@ def read_states(case_dir, t0, t1):
 
 def analyse(case_dir, t0, t1, rings=10):
     """The mean ring table and skirt over [t0, t1]: a dict with rows (s, r,
-    sigma_mm, sigma_hh, wrinkled), the attachments' and the largest skirt
+    sigma_mm, sigma_hh, wrinkled, dp), "pressureJump" the cloth's mean
+    jump (dp and it nan where canopy.h5 holds no dp), the attachments' and
+    the largest skirt
     radius, the taut hem's radius and outline diameter for the
     attachments' mean radius, the silhouette's diameter (shape.py), the
     gores, the lines' length, the rest radius R0 and the number of
@@ -257,12 +287,19 @@ def analyse(case_dir, t0, t1, rings=10):
     from . import tension_field_shape
     mesh, cloth_springs, states = read_states(case_dir, t0, t1)
     edges = np.linspace(0.0, 1.0, rings + 1)
-    tables = np.array([ring_stress(mesh, cloth_springs, x, tension, edges)
-                       for _, x, tension in states])
+    tables, jumps = [], []
+    for _, x, tension, dp in states:
+        rows = ring_stress(mesh, cloth_springs, x, tension, edges)
+        ring_dp, mean_dp = (ring_pressure_jump(mesh, x, dp, edges)
+                            if dp is not None
+                            else ([float("nan")] * rings, float("nan")))
+        tables.append([row + (d,) for row, d in zip(rows, ring_dp)])
+        jumps.append(mean_dp)
+    tables = np.array(tables)
     scallops = np.array([skirt_scallops(mesh, cloth_springs, x)
-                         for _, x, _ in states])
+                         for _, x, _, _ in states])
     silhouette = np.mean([shape.snapshot(mesh, x)["silhouetteDiameter"]
-                          for _, x, _ in states])
+                          for _, x, _, _ in states])
     gores = len(cloth_springs.attachments)
     r_attach, r_largest = scallops.mean(axis=0)
     hem = cloth_springs.hem_length / gores
@@ -273,8 +310,8 @@ def analyse(case_dir, t0, t1, rings=10):
         ring = tables[:, k, :]
         ring = ring[np.isfinite(ring[:, 0])]
         rows.append(tuple(float(v) for v in ring.mean(axis=0)) if len(ring)
-                    else (float("nan"),) * 5)
-    return {"rows": rows,
+                    else (float("nan"),) * 6)
+    return {"rows": rows, "pressureJump": float(np.mean(jumps)),
             "attachmentRadius": float(r_attach),
             "largestSkirtRadius": float(r_largest),
             "tautHemRadius": taut_hem_radius(r_attach, gores, hem),
@@ -315,11 +352,14 @@ def main():
     print("%s over %g-%g s (%d states): the cloth's stress by ring of s "
           "(lengths in R0 = %.4g m, stresses in N/m)"
           % (case_dir, t0, t1, a["states"], r0))
-    print("%6s %7s %9s %9s %9s %9s" % ("s", "r/R0", "sigma_mm", "sigma_hh",
-                                       "r sig_mm", "wrinkled"))
-    for s, r, smm, shh, wr in a["rows"]:
-        print("%6.3f %7.3f %9.2f %9.2f %9.2f %9.2f"
-              % (s, r / r0, smm, shh, r * smm, wr))
+    print("%6s %7s %9s %9s %9s %9s %9s %9s"
+          % ("s", "r/R0", "sigma_mm", "sigma_hh", "r sig_mm", "wrinkled",
+             "dp [Pa]", "dp/mean"))
+    jump = a["pressureJump"]
+    for s, r, smm, shh, wr, dp in a["rows"]:
+        print("%6.3f %7.3f %9.2f %9.2f %9.2f %9.2f %9.2f %9.3f"
+              % (s, r / r0, smm, shh, r * smm, wr, dp, dp / jump))
+    print("the pressure jump across the cloth: %.2f Pa on the mean" % jump)
     d0 = 2.0 * r0
     tf = a["tensionField"]
     print("skirt: %d lines attached at r = %.3f R0, the largest radius "

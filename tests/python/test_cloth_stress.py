@@ -26,8 +26,12 @@ a semicircle (L = pi c / 2) bulges by c / 2 beyond the chord's midpoint
 r_a cos(pi / N), a hem as long as its chord by nothing, and the
 outline's area is the attachments' polygon plus N half discs of
 diameter c, or the polygon alone; to 1e-9 (the bisection's tolerance). The scallops: the attachments at R and the other
-skirt nodes moved out to 1.2 R read 1 and 1.2. Through canopy.h5 (h5py):
-two states averaged, the hem's rest length M c_N, the taut hem's
+skirt nodes moved out to 1.2 R read 1 and 1.2. The pressure jump: annulus
+i's triangles at 10 i + 1 (a quad's outer triangle, area proportional to
+r_{i+1}, and the centre's fan) and 10 i + 3 (the inner, to r_i) give
+the ring means 10 i + (r_{i+1} + 3 r_i) / (r_{i+1} + r_i) and the cloth's
+their annulus-weighted mean, to 1e-12; a wrong count is refused. Through canopy.h5 (h5py):
+two states averaged (the pressure jump's columns too), the hem's rest length M c_N, the taut hem's
 radius and outline for 8 gores, the lines' length sqrt(R^2 + 3^2) and
 the silhouette's diameter as shape.py gives it; a cloth without lines is refused by name.
 """
@@ -168,6 +172,26 @@ check("spherical cap, spokes: sigma_mm = M T l / A_i, sigma_hh = 0",
       "sigma_mm %.6f .. %.6f N/m, relative error %.2g; sigma_hh error %.2g "
       "(tolerance 1e-12)" % (cap_mm.min(), cap_mm.max(), e_mm, e_hh))
 
+# the pressure jump by ring: annulus i's triangles carry 10 i + 1 (the
+# outer of each quad, area (dr/2) r_{i+1} sin(2 pi/M), and the centre's
+# fan) and 10 i + 3 (the inner, area (dr/2) r_i sin(2 pi/M))
+k = np.arange(len(tris))
+tri_ring = np.where(k < M, 0, 1 + (k - M) // (2 * M))
+outer = (k < M) | ((k - M) % 2 == 0)
+dp = 10.0 * tri_ring + np.where(outer, 1.0, 3.0)
+exact = 10.0 * np.arange(N) + (r[1:] + 3 * r[:-1]) / (r[1:] + r[:-1])
+exact_mean = float((exact * annulus).sum() / annulus.sum())
+got, mean = cloth_stress.ring_pressure_jump(mesh, x0, dp, edges)
+e_dp = float(np.max(np.abs(np.array(got) - exact)) / exact.max())
+check("pressure jump: area-weighted ring means and the cloth's mean",
+      e_dp < 1e-12 and abs(mean / exact_mean - 1) < 1e-12,
+      "rings %.6f .. %.6f Pa, relative error %.2g; mean %.12f Pa (exact "
+      "%.12f; tolerance 1e-12)" % (exact.min(), exact.max(), e_dp, mean,
+                                   exact_mean))
+refused("pressure jump: a value a triangle or refused",
+        lambda: cloth_stress.ring_pressure_jump(mesh, x0, dp[:-1], edges),
+        cloth_stress.ClothStressError, "triangles")
+
 # the taut hem
 ra, gores = 0.7, 16
 c16 = 2 * ra * math.sin(math.pi / gores)
@@ -220,7 +244,8 @@ if h5py is not None:
         os.makedirs(os.path.join(tmp, "postProcessing", "canopy"))
         # t = 1: spokes at T; t = 2: spokes at 3 T; t = 3: outside
         write_canopy_h5(shape.h5_path(tmp), groups, tris, springs, rest,
-                        sgroups, [(t, {"x": x0, "tension": tension})
+                        sgroups, [(t, {"x": x0, "tension": tension,
+                                       "dp": dp})
                                   for t, tension in ((1.0, spokes),
                                                      (2.0, 3 * spokes),
                                                      (3.0, 10 * spokes))])
@@ -234,11 +259,14 @@ if h5py is not None:
               a["states"] == 2 and e_mm < 1e-12 and a["gores"] == M // 2
               and abs(a["attachmentRadius"] - R) < 1e-12
               and abs(a["tautHemRadius"] - taut) < 1e-12
-              and abs(a["outlineDiameter"] - outline) < 1e-12,
+              and abs(a["outlineDiameter"] - outline) < 1e-12
+              and abs(a["pressureJump"] / exact_mean - 1) < 1e-12
+              and worst(a["rows"], 5, exact) < 1e-12,
               "%d states, sigma_mm error %.2g against the mean 2 T; %d "
-              "gores, hem %.6f m, taut hem radius %.6f m, outline %.6f m"
+              "gores, hem %.6f m, taut hem radius %.6f m, outline %.6f m; "
+              "pressure jump %.6f Pa"
               % (a["states"], e_mm, a["gores"], hem, a["tautHemRadius"],
-                 a["outlineDiameter"]))
+                 a["outlineDiameter"], a["pressureJump"]))
         line = math.sqrt(R ** 2 + 3.0 ** 2)
         model = tension_field_shape.canopy(line / R)
         flat = shape.snapshot(mesh, x0)["silhouetteDiameter"]
