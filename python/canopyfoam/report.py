@@ -116,7 +116,7 @@ REFERENCES = {
         "descentVelocitySimulationSpread": 0.05,
         "breathingFrequencyDropTest": 2.0,
         "breathingFrequencySimulation": [1.6, 2.0],
-        "convergedStudy": "resolution7ftDamped",
+        "convergedStudy": "levels7ftDamped",
     },
     "T10": {
         "title": "T-10 parabolic canopy with apex vent, D0 10.7 m, 30 lines "

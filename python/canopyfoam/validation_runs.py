@@ -2569,7 +2569,20 @@ SEVEN_DAMPED_RUNS = [
         "s" % n, ["-cellsPerDiameter", "%d" % n],
         edits=[("system/controlDict", "endTime", "80")], reference="7ft",
         steady_start=40, steady_end=80)
-    for n in (12, 18)]
+    for n in (12, 18)] + [
+    # ... and 40 cells across D0 (issue 31 §3.2's finest level) on the
+    # narrow refinement (NARROW_EDIT: the finest box 1.6 D0 wide, 0.86 M
+    # cells; on the guide wire the canopy does not swing out of it, study
+    # narrowRefinement7ft), from rest to 40 s as the levels of study
+    # resolution7ftDamped, about 9 hours on 2 ranks, in parts
+    Run("7ft-cpd40-narrow-damped-40s", SEVEN, "box 8 D0 wide, 40 cells "
+        "across D0 on the narrow refinement (the finest box 1.6 D0 wide), "
+        "the tutorial as it is (nylon's damping, loss factor 0.02 at 2 Hz, "
+        "in the cloth and the lines; the hinge dashpots off from 2 s, the "
+        "markers half a cell apart), from rest to 40 s; interval 10-40 s",
+        ["-cellsPerDiameter", "40"],
+        edits=[NARROW_EDIT, ("system/controlDict", "endTime", "40")],
+        reference="7ft", steady_start=10, steady_end=40)]
 RUNS += SEVEN_DAMPED_RUNS
 # Turbulence on the tutorial as it is (issue 34 item 3): each run above
 # with the WALE LES model and LUST convection, against its laminar self
@@ -2673,6 +2686,25 @@ RUNS += [
                ("system/controlDict", "endTime", "40"),
                ("system/controlDict", "writeInterval", "0.25")],
         reference="7ft", steady_start=10, steady_end=40)]
+# ... and the pair on a cloth whose hem can arc with either count: the
+# fabric's edge at 0.83 finest cells (0.098 m) gives the skirt 64 nodes
+# with 16 gores and with 32 (4 and 2 hem springs a gore), so the gore
+# count alone changes between the two; against the 1.25 edge the 16-gore
+# run also shows the scallops and the silhouette in the structure's
+# resolution
+RUNS += [
+    Run("7ft-cpd18-edge0.83-gores%d-40s" % g, SEVEN, "box 8 D0 wide, 18 "
+        "cells across D0, the tutorial as it is with %d gores and lines "
+        "(canopy.nAttachments, lines.number) and the fabric's edge at 0.83 "
+        "finest cells (edgeLengthPerCell), from rest to 40 s; interval "
+        "10-40 s" % g, ["-cellsPerDiameter", "18"],
+        edits=[(MESH_DICT, "edgeLengthPerCell", "0.83"),
+               (PROPS, "canopy/nAttachments", "%d" % g),
+               (PROPS, "lines/number", "%d" % g),
+               ("system/controlDict", "endTime", "40"),
+               ("system/controlDict", "writeInterval", "0.25")],
+        reference="7ft", steady_start=10, steady_end=40)
+    for g in (32, 16)]
 # The run of the tutorial as it is, the main job
 MAIN_JOB_RUN = "7ft-cpd12-damped-70s"
 RUN_BY_ID = {r.ident: r for r in RUNS}

@@ -158,9 +158,11 @@ STUDIES = [
      + ["7ft-cpd27-markerhalf-loss0.02-80s"]),
     ("gores7ft", "7 ft canopy on the guide wire, the tutorial as it is "
      "(nylon's damping, loss factor 0.02 at 2 Hz): 16 gores and lines (the "
-     "drop test's canopy) against 32, at 18 cells across D0 (box 8 D0 "
-     "wide; from rest to 40 s, read over 10-40 s)",
-     ["7ft-cpd18-markerhalf-loss0.02-40s", "7ft-cpd18-gores32-40s"]),
+     "drop test's canopy) against 32, at 18 cells across D0 with the "
+     "fabric's edge at 1.25 and 0.83 finest cells (box 8 D0 wide; from rest "
+     "to 40 s, read over 10-40 s)",
+     ["7ft-cpd18-markerhalf-loss0.02-40s", "7ft-cpd18-gores32-40s",
+      "7ft-cpd18-edge0.83-gores16-40s", "7ft-cpd18-edge0.83-gores32-40s"]),
     ("turbulence7ftDamped", "7 ft canopy on the guide wire, the tutorial "
      "as it is (nylon's damping, loss factor 0.02 at 2 Hz): laminar against "
      "LES (WALE, LUST convection) at 12 cells across D0 (the main job's "

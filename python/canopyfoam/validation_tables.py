@@ -1955,11 +1955,19 @@ def turbulence_lines(results, gci_cd0=None, study="resolution7ftHeld"):
 STUDY_CAVEATS = {
     "resolution7ftDamped": "it is read over 10-40 s, over which the "
     "12- and 18-cell levels still slow (over 40-80 s, study "
-    "levels7ftDamped, they give C_D0 0.851 and 0.898 against 0.768 and "
-    "0.839 here), where the main job is read over 30-70 s; its finest "
-    "level is 27 cells across D0, and its observed order in C_D0 (0.66) "
-    "is below the IB forcing's formal first order, so the extrapolation "
-    "(1.07) lies far beyond the finest level",
+    "levels7ftDamped, which the 7 ft summaries compare with, the three "
+    "levels give C_D0 0.851, 0.898 and 0.859 against 0.768, 0.839 and "
+    "0.894 here); its finest level is 27 cells across D0, and its "
+    "observed order in C_D0 (0.66) is below the IB forcing's formal first "
+    "order, so the extrapolation (1.07) lies far beyond the finest level",
+    "levels7ftDamped": "its finest level is 27 cells across D0 (the "
+    "40-cell level, 7ft-cpd40-narrow-damped-40s, is not complete); its "
+    "levels converge oscillatorily, so the GCI is Roache's bound (safety "
+    "factor 3 with the IB forcing's formal first order), and their "
+    "spread is of the size of a 40 s window's statistical uncertainty "
+    "(the 18- and 27-cell levels differ by 4.5 % in C_D0 against a "
+    "combined 95 % interval of ±4.6 %); the main job is read over 30-70 "
+    "s, this study over 40-80 s",
     "resolution7ftMarkerHalf": "its levels are the tutorial's before "
     "nylon's damping (the damped tutorial's levels are study "
     "resolution7ftDamped, which the 7 ft summaries compare with), its "
