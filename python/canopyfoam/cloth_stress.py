@@ -126,6 +126,18 @@ def spring_directions(mesh, cloth_springs, x):
     return e, length, m, h
 
 
+def _triangle_rings(mesh, x, edges):
+    """(area, mean s, ring index) of each triangle in state x, the ring
+    [edges[k], edges[k+1]) holding its mean s."""
+    tx = np.asarray(x, dtype=float)[mesh.triangles]
+    area = 0.5 * np.linalg.norm(np.cross(tx[:, 1] - tx[:, 0],
+                                         tx[:, 2] - tx[:, 0]), axis=1)
+    tri_s = mesh.s[mesh.triangles].mean(axis=1)
+    ring = np.clip(np.searchsorted(edges, tri_s, side="right") - 1, 0,
+                   len(edges) - 2)
+    return area, tri_s, ring
+
+
 def ring_stress(mesh, cloth_springs, x, tension, edges):
     """Per ring [edges[k], edges[k+1]) of the triangles' mean s: rows
     (s_mean, r_mean, sigma_mm, sigma_hh, wrinkled fraction) of the state
@@ -145,14 +157,9 @@ def ring_stress(mesh, cloth_springs, x, tension, edges):
               w * along_m[cloth_springs.share_spring])
     np.add.at(tri_hh, cloth_springs.share_tri,
               w * along_h[cloth_springs.share_spring])
-    tx = x[mesh.triangles]
-    area = 0.5 * np.linalg.norm(np.cross(tx[:, 1] - tx[:, 0],
-                                         tx[:, 2] - tx[:, 0]), axis=1)
+    area, tri_s, ring = _triangle_rings(mesh, x, edges)
     _, _, _, radius = shape.axial_coordinates(mesh, x)
-    tri_s = mesh.s[mesh.triangles].mean(axis=1)
     tri_r = radius[mesh.triangles].mean(axis=1)
-    ring = np.clip(np.searchsorted(edges, tri_s, side="right") - 1, 0,
-                   len(edges) - 2)
     rows = []
     for k in range(len(edges) - 1):
         sel = ring == k
@@ -177,12 +184,7 @@ def ring_pressure_jump(mesh, x, dp, edges):
     if dp.shape != (len(mesh.triangles),):
         raise ClothStressError("the pressure jump has %d values for %d "
                                "triangles" % (dp.size, len(mesh.triangles)))
-    tx = np.asarray(x, dtype=float)[mesh.triangles]
-    area = 0.5 * np.linalg.norm(np.cross(tx[:, 1] - tx[:, 0],
-                                         tx[:, 2] - tx[:, 0]), axis=1)
-    tri_s = mesh.s[mesh.triangles].mean(axis=1)
-    ring = np.clip(np.searchsorted(edges, tri_s, side="right") - 1, 0,
-                   len(edges) - 2)
+    area, _, ring = _triangle_rings(mesh, x, edges)
     out = []
     for k in range(len(edges) - 1):
         sel = ring == k

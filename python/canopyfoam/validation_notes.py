@@ -2202,7 +2202,7 @@ GORES_PROSE = [
     "breathing at 1.08 Hz (St 0.35) with 2.0 cm, 1.14 coupling iterations "
     "a step, 35 minutes on 2 ranks. Against the 1.25 edge with 16 gores "
     "the finer cloth moves the silhouette by +1.6 % (0.751 to 0.762), the "
-    "attachments by +0.01 R0 and C_D0 by +4.6 %, inside the pair's ±4.7 "
+    "attachments by +0.02 R0 and C_D0 by +4.6 %, inside the pair's ±4.7 "
     "%: the 16-gore shape holds in the cloth's resolution. On the same "
     "fine cloth 32 gores against 16 carry the attachments out by 0.07 R0 "
     "(0.784 against 0.715), the silhouette by +5.8 % (0.806 against "
