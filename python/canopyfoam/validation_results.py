@@ -4,15 +4,17 @@ import os
 
 import numpy as np
 
+from . import cloth_stress
 from . import forced_turn
 from . import load_moment
 from . import report as rep
+from . import shape
 from . import turn_fit
 from . import validation_archive as archive
 from . import validation_paths as paths
-from .validation_runs import (FORCED_HELD, FORCED_TURN, FORCED_TURN_AXIS,
-                              FORCED_TURN_START, PIVOT_WIND, PROPS,
-                              TILT_T10_SPEED)
+from .validation_runs import (DISC_TUTORIAL_RUNS, FORCED_HELD, FORCED_TURN,
+                              FORCED_TURN_AXIS, FORCED_TURN_START,
+                              PIVOT_WIND, PROPS, TILT_T10_SPEED)
 from .validation_case import (cell_count, foam_get, last_time,
                               run_code_version, run_state, running_pid,
                               wall_time)
@@ -49,6 +51,13 @@ def result(run):
         except (load_moment.LoadMomentError, rep.ReportError, OSError,
                 RuntimeError, np.linalg.LinAlgError) as e:
             r["turnFit"] = {"note": str(e)}
+    if run.ident in DISC_RING_RUNS:
+        try:
+            r["pressureJumpRings"] = pressure_jump_rings(
+                run.case_dir, r["steady"]["start"], r["steady"]["end"])
+        except (cloth_stress.ClothStressError, shape.ShapeError, OSError,
+                ValueError) as e:
+            r["pressureJumpRings"] = {"note": str(e)}
     if run.ident == FORCED_HELD:
         try:
             peaks, resolution = forced_turn.wake_peaks(
@@ -69,6 +78,24 @@ def result(run):
                 np.linalg.LinAlgError) as e:
             r["forcedTurn"] = {"note": str(e)}
     return r, state
+
+
+# Runs whose record keeps the pressure jump on the cloth by ring (the rigid
+# disc's: where on the plate its load lies)
+DISC_RING_RUNS = frozenset(r.ident for r in DISC_TUTORIAL_RUNS)
+DISC_RINGS = 20
+
+
+def pressure_jump_rings(case_dir, t0, t1, rings=DISC_RINGS):
+    """The pressure jump canopy.h5 holds (dp, one value a triangle) over
+    [t0, t1] as cloth_stress.analyse averages it: per ring of equal width
+    in s (the radial position, 0 at the centre, 1 at the rim) the ring's
+    mid s and its area-weighted mean jump [Pa], with the cloth's mean and
+    the number of states."""
+    a = cloth_stress.analyse(case_dir, t0, t1, rings)
+    return {"s": [(k + 0.5) / rings for k in range(rings)],
+            "dp": [row[5] for row in a["rows"]],
+            "mean": a["pressureJump"], "states": a["states"]}
 
 
 def stabiliser_settings(run):

@@ -163,6 +163,21 @@ STUDIES = [
      "to 40 s, read over 10-40 s)",
      ["7ft-cpd18-markerhalf-loss0.02-40s", "7ft-cpd18-gores32-40s",
       "7ft-cpd18-edge0.83-gores16-40s", "7ft-cpd18-edge0.83-gores32-40s"]),
+    ("discTutorial7ft", "The fluid side alone on the 7 ft tutorial's "
+     "forcing: the rigid impermeable disc of study disc7ft (D0 = 2.134 m, "
+     "5 m/s) with the markers half a cell apart, at 12, 18 and 27 cells "
+     "across D0, and at 18 with the air's pressure sampled off the disc as "
+     "the cloth's load (to 20 s, read over 5-20 s)",
+     ["disc-markerhalf-cpd%d" % n for n in (12, 18, 27)]
+     + ["disc-markerhalf-sampled-cpd18"]),
+    ("load7ftSampled", "7 ft canopy on the guide wire, the tutorial as it "
+     "is at 12 cells across D0: the cloth's load the IB force's reaction "
+     "taken from the cells (the tutorial's) against the air's pressure "
+     "sampled 3 cells off each side of the markers, without and with the "
+     "hinge dashpots after 2 s (from rest to 40 s, read over 10-40 s; "
+     "with the dashpots to 10 s, read over 3-7.5 s)",
+     ["7ft-cpd12-markerhalf-loss0.02-40s", "7ft-cpd12-sampled-40s",
+      "7ft-cpd12-sampled-dashpots-10s"]),
     ("turbulence7ftDamped", "7 ft canopy on the guide wire, the tutorial "
      "as it is (nylon's damping, loss factor 0.02 at 2 Hz): laminar against "
      "LES (WALE, LUST convection) at 12 cells across D0 (the main job's "

@@ -36,7 +36,7 @@ SHAPE_STUDIES = ("default7ft", "resolution7ft", "resolution7ftHeld",
                  "resolution7ftLong", "wrinkling7ft",
                  "turbulence7ftConverged", "damping7ftTutorial",
                  "resolution7ftDamped", "levels7ftDamped",
-                 "turbulence7ftDamped")
+                 "turbulence7ftDamped", "load7ftSampled")
 
 
 # Studies whose report gets the breathing in the Strouhal band (issue 34
@@ -1004,7 +1004,7 @@ def resolution_estimates(results, fineness=None):
 
 # Studies of a body held still in a stream: a table of the force on it
 # (disc_table) instead of the parachute's
-FORCE_STUDIES = ("disc7ft", "discLES7ft")
+FORCE_STUDIES = ("disc7ft", "discLES7ft", "discTutorial7ft")
 
 
 def disc_coefficient(a):
@@ -1042,13 +1042,15 @@ def disc_table(records):
     return rows
 
 
-def disc_gci_lines(results):
-    """The GCI of the disc's C_D over its three levels, as markdown."""
+def disc_gci_lines(results, levels=None):
+    """The GCI of the disc's C_D over its three levels (the runs whose ids
+    are in levels, default all), as markdown."""
     from . import gci as gci_mod
     done = []
     for run, rec in results:
         a = rec and rec["analysis"]
-        if a and rec["complete"]:
+        if a and rec["complete"] and (levels is None
+                                      or run.ident in levels):
             done.append((cells_per_diameter(run), disc_coefficient(a)[3]))
     if len(done) != 3:
         return ["Grid convergence of C_D: needs three complete levels, "
@@ -1095,6 +1097,56 @@ def disc_lines(results):
              "7ft-compression0-40s); the handbook's C_D0 and Dp/D0 for "
              "flat circular canopies imply 1.5-1.8." % DISC_SPEED, ""]
     return lines + disc_gci_lines(results)
+
+
+def _per(value, scale):
+    """value / scale, None where value is None (a record's nan)."""
+    return None if value is None else value / scale
+
+
+def disc_ring_lines(results):
+    """The pressure jump on the disc by ring (the records'
+    pressureJumpRings), in dynamic pressures of the stream, one column a
+    run and a row a ring that holds some run's triangles, as markdown; []
+    when no record holds it."""
+    q = 0.5 * 1.2 * DISC_SPEED ** 2
+    cols = []
+    for run, rec in results:
+        rings = (rec and rec["analysis"] or {}).get("pressureJumpRings")
+        if rings and "dp" in rings:
+            cols.append((run, rings))
+    if not cols:
+        return []
+    rows = ["| s | " + " | ".join("%s: Δp/q" % run.ident
+                                     for run, _ in cols) + " |",
+            "|---|" + "---|" * len(cols)]
+    for k, s in enumerate(cols[0][1]["s"]):
+        values = [_per(rings["dp"][k], q) for _, rings in cols]
+        if all(v is None or not math.isfinite(v) for v in values):
+            continue        # no run's triangle has its mean s in the ring
+        rows.append("| %.3f | %s |" % (s, " | ".join(
+            _f(v, "%.3f") for v in values)))
+    rows.append("| mean | %s |" % " | ".join(
+        _f(_per(rings["mean"], q), "%.3f") for _, rings in cols))
+    return rows + ["", "Δp: the pressure jump the solver hands the cloth "
+                   "(canopy.h5's dp, one value a triangle), area-weighted "
+                   "in rings of equal width in s (shape.py's radial "
+                   "position: 1 - d / d_max, d a node's path to the rim "
+                   "along the cloth's springs; on the flat disc close to "
+                   "r/R0) and averaged over the "
+                   "states written in the interval (python/canopyfoam/"
+                   "validation_results.py pressure_jump_rings, "
+                   "`python3 -m canopyfoam.cloth_stress <case> 5 20 20`); "
+                   "q = ρU²/2 = %.1f Pa." % q, ""]
+
+
+def disc_tutorial_lines(results):
+    """Study discTutorial7ft's GCI of C_D over its three levels (the
+    sampled run left out) and the pressure jump by ring."""
+    return (disc_gci_lines(results, levels=(
+                "disc-markerhalf-cpd12", "disc-markerhalf-cpd18",
+                "disc-markerhalf-cpd27"))
+            + disc_ring_lines(results))
 
 
 def disc_les_lines(results):
