@@ -2592,8 +2592,9 @@ DISC_TUTORIAL_PROSE = [
     "narrows. At 18 cells the whole difference between the reaction's and "
     "the sampled drag (12.0 N of 69.7) lies in that band (26.1 against "
     "13.5 N). This answers issue 34's question for a free edge held "
-    "still: the hem's load peak on the canopy (study gores7ft: 1.4-2.6 "
-    "times the cloth's mean at the hem) is of the same kind, a load the "
+    "still: the hem's load peak on the canopy (studies gores7ft and "
+    "levels7ftDamped: up to 2.6 times the cloth's mean at the hem) is of "
+    "the same kind, a load the "
     "air's pressure does not carry, pushing the hem outward along its "
     "normal; on the disc it is a discretisation error of the forcing "
     "that falls about as the cell.", ""]
