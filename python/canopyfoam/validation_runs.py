@@ -2610,13 +2610,14 @@ RUNS += SEVEN_DAMPED_LES_RUNS
 # compares the forcing's jump with the air's near the free rim
 TO_20 = [("system/controlDict", "endTime", "20")]
 DISC_REPORT = ["-steadyStart", "5"]     # the Allrun's 30 s is past the end
-DISC_TUTORIAL_RUNS = [
+DISC_TUTORIAL_LEVELS = [
     Run("disc-markerhalf-cpd%d" % n, SEVEN, "rigid impermeable disc of D0 "
         "in a 5 m/s stream, the tutorial's forcing (the markers half a cell "
         "apart), box 8 D0 wide, %d cells across D0, to 20 s; interval 5-20 "
         "s" % n, ["-cellsPerDiameter", "%d" % n] + DISC_REPORT, DISC + TO_20,
         steady_start=5, steady_end=20)
-    for n in (12, 18, 27)] + [
+    for n in (12, 18, 27)]
+DISC_TUTORIAL_RUNS = DISC_TUTORIAL_LEVELS + [
     Run("disc-markerhalf-sampled-cpd18", SEVEN, "rigid impermeable disc of "
         "D0 in a 5 m/s stream, the tutorial's forcing, the cloth's load the "
         "air's pressure sampled 3 cells off each side (load type sampled), "

@@ -11,7 +11,8 @@ from . import forced_turn
 from . import report as rep
 from . import validation_archive as archive
 from . import validation_paths as paths
-from .validation_runs import (CROSSWIND_T10, DISC_SPEED, FORCED_HELD,
+from .validation_runs import (CROSSWIND_T10, DISC_SPEED,
+                              DISC_TUTORIAL_LEVELS, FORCED_HELD,
                               FORCED_TURN, FORCED_TURN_START, MAIN_JOB_RUN,
                               MESH_DICT, PROPS, REMOVE, RUN_BY_ID, TILT_STREAM,
                               TILT_T10_SPEED, narrow, tutorial_entry)
@@ -1109,25 +1110,26 @@ def disc_ring_lines(results):
     pressureJumpRings), in dynamic pressures of the stream, one column a
     run and a row a ring that holds some run's triangles, as markdown; []
     when no record holds it."""
-    q = 0.5 * 1.2 * DISC_SPEED ** 2
     cols = []
     for run, rec in results:
-        rings = (rec and rec["analysis"] or {}).get("pressureJumpRings")
+        a = rec and rec["analysis"] or {}
+        rings = a.get("pressureJumpRings")
         if rings and "dp" in rings:
-            cols.append((run, rings))
+            q = 0.5 * a["parameters"]["rho"]["value"] * DISC_SPEED ** 2
+            cols.append((run, dict(rings, q=q)))
     if not cols:
         return []
     rows = ["| s | " + " | ".join("%s: Δp/q" % run.ident
                                      for run, _ in cols) + " |",
             "|---|" + "---|" * len(cols)]
     for k, s in enumerate(cols[0][1]["s"]):
-        values = [_per(rings["dp"][k], q) for _, rings in cols]
+        values = [_per(rings["dp"][k], rings["q"]) for _, rings in cols]
         if all(v is None or not math.isfinite(v) for v in values):
             continue        # no run's triangle has its mean s in the ring
         rows.append("| %.3f | %s |" % (s, " | ".join(
             _f(v, "%.3f") for v in values)))
     rows.append("| mean | %s |" % " | ".join(
-        _f(_per(rings["mean"], q), "%.3f") for _, rings in cols))
+        _f(_per(rings["mean"], rings["q"]), "%.3f") for _, rings in cols))
     return rows + ["", "Δp: the pressure jump the solver hands the cloth "
                    "(canopy.h5's dp, one value a triangle), area-weighted "
                    "in rings of equal width in s (shape.py's radial "
@@ -1137,15 +1139,15 @@ def disc_ring_lines(results):
                    "states written in the interval (python/canopyfoam/"
                    "validation_results.py pressure_jump_rings, "
                    "`python3 -m canopyfoam.cloth_stress <case> 5 20 20`); "
-                   "q = ρU²/2 = %.1f Pa." % q, ""]
+                   "q = ρU²/2 = %s Pa." % " / ".join(sorted(set(
+                       "%.1f" % rings["q"] for _, rings in cols))), ""]
 
 
 def disc_tutorial_lines(results):
     """Study discTutorial7ft's GCI of C_D over its three levels (the
     sampled run left out) and the pressure jump by ring."""
-    return (disc_gci_lines(results, levels=(
-                "disc-markerhalf-cpd12", "disc-markerhalf-cpd18",
-                "disc-markerhalf-cpd27"))
+    return (disc_gci_lines(results, levels=[
+                run.ident for run in DISC_TUTORIAL_LEVELS])
             + disc_ring_lines(results))
 
 
