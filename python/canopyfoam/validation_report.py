@@ -22,7 +22,8 @@ from .validation_tables import (BREATHING_STUDIES, CONVERGED_WINDOWS,
                                 breathing_cloth_lines, cross_free_lines,
                                 cross_resolution_lines, cross_starts_lines,
                                 disc_les_lines, disc_lines, disc_table,
-                                disc_tutorial_lines,
+                                disc_tutorial_lines, disc_edge_lines,
+                                disc_ring_lines,
                                 edge_against_cells_lines, edge_study_lines,
                                 fabric_edge_cells, flat_circular_handbook,
                                 forced_turn_lines, forced_turn_notes,
@@ -904,6 +905,10 @@ def write_report():
             md += disc_les_lines(results)
         if name == "discTutorial7ft":
             md += disc_tutorial_lines(results)
+        if name == "discEdge7ft":
+            md += disc_edge_lines(results)
+        if name == "discRetracted7ft":
+            md += disc_ring_lines(results)
         if name == "wrinkling7ft":
             md += gci_lines([(run, rec) for run, rec in results
                              if run.ident in ("7ft-compression0",

@@ -12,7 +12,8 @@ from . import shape
 from . import turn_fit
 from . import validation_archive as archive
 from . import validation_paths as paths
-from .validation_runs import (DISC_TUTORIAL_RUNS, FORCED_HELD, FORCED_TURN,
+from .validation_runs import (DISC_RETRACTED_RUNS, DISC_TUTORIAL_RUNS,
+                              FORCED_HELD, FORCED_TURN,
                               FORCED_TURN_AXIS, FORCED_TURN_START,
                               PIVOT_WIND, PROPS, TILT_T10_SPEED)
 from .validation_case import (cell_count, foam_get, last_time,
@@ -82,7 +83,8 @@ def result(run):
 
 # Runs whose record keeps the pressure jump on the cloth by ring (the rigid
 # disc's: where on the plate its load lies)
-DISC_RING_RUNS = frozenset(r.ident for r in DISC_TUTORIAL_RUNS)
+DISC_RING_RUNS = frozenset(r.ident for r in DISC_TUTORIAL_RUNS
+                           + DISC_RETRACTED_RUNS)
 DISC_RINGS = 20
 
 

@@ -2626,6 +2626,76 @@ DISC_TUTORIAL_RUNS = DISC_TUTORIAL_LEVELS + [
         DISC + TO_20 + [(PROPS, "coupling/load", "{ type sampled; }")],
         steady_start=5, steady_end=20)]
 RUNS += DISC_TUTORIAL_RUNS
+# Where is an IB plate's edge? The kernel's support reaches past the
+# outermost markers, so a plate acts wider than it is, by about c cells at
+# its free edge: the drag of a rigid disc at n cells across D0 is then
+# F(n) = F (1 + 2 k (c - r)/n) to first order, r the edge's retraction
+# (coupling.forcing.freeEdgeRetractionCells) and k = dln F/dln D0. The
+# retraction at which two levels agree is c, whatever k. The disc at Re =
+# V D0/nu = 10 (the air's viscosity raised to 1.067 m^2/s): its wake is
+# steady (a disc's sheds above Re ~ 100, Willmarth et al., Phys. Fluids 7
+# (1964) 197), and the viscous number nu dt/h^2 stays below 1.5 (at Re = 1
+# the forcing leaked, slip 20 %, at 18 cells, where it was 5.6). Serial,
+# to 10 s (24 D0/V), read over 7-10 s
+LOW_RE_NU = DISC_SPEED*2.134/10
+LOW_RE = DISC + [("constant/transportProperties", "nu", "%g" % LOW_RE_NU),
+                 ("system/controlDict", "endTime", "10")]
+
+
+def disc_low_re(n, retraction=0):
+    """The Re = 10 disc at n cells across D0, its free edge retracted by
+    `retraction` cells."""
+    edits = LOW_RE + ([] if not retraction else [
+        (PROPS, "coupling/forcing/freeEdgeRetractionCells",
+         "%g" % retraction)])
+    return Run("disc-re10-cpd%d-retract%g" % (n, retraction), SEVEN,
+               "rigid impermeable disc of D0 in a 5 m/s stream at Re 10 (nu "
+               "%g m^2/s), the tutorial's forcing, the free edge retracted by "
+               "%g cell, box 8 D0 wide, %d cells across D0, serial, to 10 s; "
+               "interval 7-10 s" % (LOW_RE_NU, retraction, n),
+               ["-np", "1", "-cellsPerDiameter", "%d" % n, "-steadyStart",
+                "7"], edits, steady_start=7, steady_end=10)
+
+
+DISC_LOW_RE_RUNS = [disc_low_re(n, r) for r in (0, 1) for n in (8, 12, 18)]
+RUNS += DISC_LOW_RE_RUNS
+# The retraction study discEdge7ft measures: the drags of 8 and 12, and of
+# 12 and 18 cells across D0 agree at 1.08 and 1.11 cells
+EDGE_RETRACTION = 1.1
+RETRACT = [(PROPS, "coupling/forcing/freeEdgeRetractionCells",
+            "%g" % EDGE_RETRACTION)]
+# ... on the disc of study discTutorial7ft (5 m/s in air, to 20 s, read
+# over 5-20 s), with the reaction and with the sampled load
+DISC_RETRACTED_RUNS = [
+    Run("disc-markerhalf-cpd%d-retract%g" % (n, EDGE_RETRACTION), SEVEN,
+        "rigid impermeable disc of D0 in a 5 m/s stream, the tutorial's "
+        "forcing with the free edge retracted by %g cell, box 8 D0 wide, %d "
+        "cells across D0, to 20 s; interval 5-20 s" % (EDGE_RETRACTION, n),
+        ["-cellsPerDiameter", "%d" % n] + DISC_REPORT, DISC + TO_20 + RETRACT,
+        steady_start=5, steady_end=20)
+    for n in (12, 18)] + [
+    Run("disc-markerhalf-sampled-cpd18-retract%g" % EDGE_RETRACTION, SEVEN,
+        "rigid impermeable disc of D0 in a 5 m/s stream, the tutorial's "
+        "forcing with the free edge retracted by %g cell, the cloth's load "
+        "the air's pressure sampled 3 cells off each side (load type "
+        "sampled), box 8 D0 wide, 18 cells across D0, to 20 s; interval "
+        "5-20 s" % EDGE_RETRACTION, ["-cellsPerDiameter", "18"] + DISC_REPORT,
+        DISC + TO_20 + RETRACT + [(PROPS, "coupling/load",
+                                   "{ type sampled; }")],
+        steady_start=5, steady_end=20)]
+RUNS += DISC_RETRACTED_RUNS
+# ... and on the 7 ft canopy, the tutorial as it is otherwise, from rest to
+# 40 s, read over 10-40 s, against 7ft-cpd12/18-markerhalf-loss0.02-40s
+SEVEN_RETRACTED_RUNS = [
+    Run("7ft-cpd%d-retract%g-40s" % (n, EDGE_RETRACTION), SEVEN, "box 8 D0 "
+        "wide, %d cells across D0, the tutorial as it is with the hem "
+        "retracted by %g cell, to 40 s; interval 10-40 s"
+        % (n, EDGE_RETRACTION), ["-cellsPerDiameter", "%d" % n,
+                                 "-steadyStart", "10"],
+        edits=RETRACT + [("system/controlDict", "endTime", "40")],
+        reference="7ft", steady_start=10, steady_end=40)
+    for n in (12, 18)]
+RUNS += SEVEN_RETRACTED_RUNS
 # The 7 ft tutorial with the air's pressure as the cloth's load: on the
 # rigid disc the IB force's reaction (the tutorial's load) and the air's
 # pressure sampled 3 cells off each side agree within 4 % inside the rim

@@ -170,6 +170,28 @@ STUDIES = [
      "the cloth's load (to 20 s, read over 5-20 s)",
      ["disc-markerhalf-cpd%d" % n for n in (12, 18, 27)]
      + ["disc-markerhalf-sampled-cpd18"]),
+    ("discEdge7ft", "Where the IB forcing puts a free edge: the rigid "
+     "impermeable disc of D0 = 2.134 m at Re = 10 (a steady wake; the air's "
+     "viscosity raised to 1.067 m^2/s, 5 m/s), on the tutorial's forcing "
+     "at 8, 12 and 18 cells across D0, its edge retracted by 0 and 1 cell "
+     "(serial, to 10 s, read over 7-10 s)",
+     ["disc-re10-cpd%d-retract%g" % (n, r) for r in (0, 1)
+      for n in (8, 12, 18)]),
+    ("discRetracted7ft", "The disc of study discTutorial7ft (5 m/s in "
+     "air, Re 7e5) with its free edge retracted by 1.1 cells (study "
+     "discEdge7ft), at 12 and 18 cells across D0, its load the IB force's "
+     "reaction and at 18 the air's sampled pressure, against the same "
+     "without the retraction (to 20 s, read over 5-20 s)",
+     ["disc-markerhalf-cpd%d-retract1.1" % n for n in (12, 18)]
+     + ["disc-markerhalf-sampled-cpd18-retract1.1"]
+     + ["disc-markerhalf-cpd%d" % n for n in (12, 18)]
+     + ["disc-markerhalf-sampled-cpd18"]),
+    ("retraction7ft", "7 ft canopy on the guide wire, the tutorial as it "
+     "is with its hem retracted by 1.1 cells (study discEdge7ft) against "
+     "it as it is, at 12 and 18 cells across D0 (box 8 D0 wide; from rest "
+     "to 40 s, read over 10-40 s)",
+     ["7ft-cpd%d-retract1.1-40s" % n for n in (12, 18)]
+     + ["7ft-cpd%d-markerhalf-loss0.02-40s" % n for n in (12, 18)]),
     ("load7ftSampled", "7 ft canopy on the guide wire, the tutorial as it "
      "is at 12 cells across D0: the cloth's load the IB force's reaction "
      "taken from the cells (the tutorial's) against the air's pressure "

@@ -27,7 +27,8 @@ def _f(x, fmt="%.3g"):
 
 
 # Studies whose report gets the canopy's shape over each run's interval
-SHAPE_STUDIES = ("default7ft", "resolution7ft", "resolution7ftHeld",
+SHAPE_STUDIES = ("default7ft", "retraction7ft", "resolution7ft",
+                 "resolution7ftHeld",
                  "edgeLength7ftLong", "edgeLength7ftTutorial",
                  "edgeLength7ftTutorialTo80", "markers7ftTutorial",
                  "numerics7ftMarkerHalf", "resolution7ftStiff",
@@ -1005,7 +1006,8 @@ def resolution_estimates(results, fineness=None):
 
 # Studies of a body held still in a stream: a table of the force on it
 # (disc_table) instead of the parachute's
-FORCE_STUDIES = ("disc7ft", "discLES7ft", "discTutorial7ft")
+FORCE_STUDIES = ("disc7ft", "discLES7ft", "discTutorial7ft", "discEdge7ft",
+                 "discRetracted7ft")
 
 
 def disc_coefficient(a):
@@ -1149,6 +1151,65 @@ def disc_tutorial_lines(results):
     return (disc_gci_lines(results, levels=[
                 run.ident for run in DISC_TUTORIAL_LEVELS])
             + disc_ring_lines(results))
+
+
+def edge_retraction(run):
+    """The free edges' retraction in cells a run sets (0 if none)."""
+    value = 0.0
+    for path, entry, v in run.edits:
+        if entry == "coupling/forcing/freeEdgeRetractionCells":
+            value = float(v)
+    return value
+
+
+def edge_crossings(results):
+    """The retraction at which two levels' drags agree: per pair of
+    consecutive levels holding runs at two retractions r0 < r1, (n_a, n_b,
+    r0, r1, F_a(r0), F_b(r0), F_a(r1), F_b(r1), crossing, slope ratio).
+    To first order F_n(r) = F (1 + 2 k (c - r)/n), so the drags agree at
+    r = c and the drop from r0 to r1 scales as 1/n (slope ratio n_b/n_a)."""
+    force = {}
+    for run, rec in results:
+        a = rec and rec["analysis"]
+        if a and rec["complete"]:
+            force[(cells_per_diameter(run), edge_retraction(run))] = \
+                disc_coefficient(a)[0]
+    levels = sorted(set(n for n, _ in force))
+    out = []
+    for n_a, n_b in zip(levels, levels[1:]):
+        rs = sorted(set(r for n, r in force if n == n_a)
+                    & set(r for n, r in force if n == n_b))
+        if len(rs) < 2:
+            continue
+        r0, r1 = rs[0], rs[-1]
+        fa0, fb0 = force[(n_a, r0)], force[(n_b, r0)]
+        fa1, fb1 = force[(n_a, r1)], force[(n_b, r1)]
+        d0, d1 = fa0 - fb0, fa1 - fb1
+        crossing = r0 + (r1 - r0) * d0 / (d0 - d1) if d0 != d1 else None
+        ratio = (fa0 - fa1) / (fb0 - fb1) if fb0 != fb1 else None
+        out.append((n_a, n_b, r0, r1, fa0, fb0, fa1, fb1, crossing, ratio))
+    return out
+
+
+def disc_edge_lines(results):
+    """Study discEdge7ft: where the IB disc's edge acts, from the
+    retraction at which consecutive levels' drags agree."""
+    rows = edge_crossings(results)
+    if not rows:
+        return ["The crossing needs two levels at two retractions each.", ""]
+    lines = ["Where the drags of two levels agree (F_n(r) linear in the "
+             "retraction r between the two retractions run):", "",
+             "| levels (cells across D0) | F at r = %s: coarse, fine [N] "
+             "| F at r = %s: coarse, fine [N] | drags agree at r [cells] "
+             "| drop r0 → r1, coarse / fine (first order: n_fine/n_coarse) "
+             "|" % ("r0", "r1"), "|---|---|---|---|---|"]
+    for n_a, n_b, r0, r1, fa0, fb0, fa1, fb1, crossing, ratio in rows:
+        lines.append("| %g, %g | %.2f, %.2f (r0 = %g) | %.2f, %.2f (r1 = %g) "
+                     "| %s | %s (%.2f) |" % (
+                         n_a, n_b, fa0, fb0, r0, fa1, fb1, r1,
+                         _f(crossing, "%.2f"), _f(ratio, "%.2f"),
+                         n_b / n_a))
+    return lines + [""]
 
 
 def disc_les_lines(results):

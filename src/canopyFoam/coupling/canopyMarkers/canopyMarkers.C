@@ -5,6 +5,7 @@
 #include "canopyMarkers.H"
 #include "canopy.h"
 #include "error.H"
+#include "freeEdgeRetraction.H"
 
 namespace
 {
@@ -101,12 +102,12 @@ Foam::labelList Foam::canopyMarkers::levels
 Foam::canopyMarkers::canopyMarkers
 (
     const canopy_model* model,
-    const labelList& levels
+    const labelList& levels,
+    const freeEdgeRetraction* retraction
 )
 :
     levels_(levels),
-    nNodes_(canopy_model_node_count(model)),
-    triangleNodes_()
+    nNodes_(canopy_model_node_count(model))
 {
     const int nt = canopy_model_triangle_count(model);
     if (levels.size() != nt)
@@ -117,18 +118,34 @@ Foam::canopyMarkers::canopyMarkers
     }
     List<int> tri(3*nt);
     canopy_model_get_triangles(model, tri.data(), nt);
-    triangleNodes_.setSize(nt);
-    forAll(triangleNodes_, t)
-    {
-        for (int k = 0; k < 3; ++k)
-        {
-            triangleNodes_[t][k] = tri[3*t + k];
-        }
-    }
 
-    DynamicList<label> parent;
-    DynamicList<FixedList<scalar, 3>> bary;
-    DynamicList<scalar> fraction;
+    // Each node as the markers see it: itself, or with the free edges
+    // retracted its view (freeEdgeRetraction)
+    auto nodeShare = [&]
+    (
+        const label i,
+        const scalar b,
+        DynamicList<label>& nodes,
+        DynamicList<scalar>& weights
+    )
+    {
+        if (!retraction)
+        {
+            nodes.append(i);
+            weights.append(b);
+            return;
+        }
+        const labelList& view = retraction->viewNodes(i);
+        const scalarList& share = retraction->viewWeights(i);
+        forAll(view, k)
+        {
+            nodes.append(view[k]);
+            weights.append(b*share[k]);
+        }
+    };
+
+    DynamicList<label> parent, start, node;
+    DynamicList<scalar> weight, fraction;
     triangleStart_.setSize(nt + 1);
 
     const FixedList<scalar, 3> e0({1, 0, 0}), e1({0, 1, 0}), e2({0, 0, 1});
@@ -146,14 +163,21 @@ Foam::canopyMarkers::canopyMarkers
         forAll(sub, s)
         {
             parent.append(t);
-            bary.append(sub[s]);
             fraction.append(1.0/sub.size());
+            start.append(node.size());
+            for (int k = 0; k < 3; ++k)
+            {
+                nodeShare(tri[3*t + k], sub[s][k], node, weight);
+            }
         }
     }
     triangleStart_[nt] = parent.size();
+    start.append(node.size());
 
     triangle_.transfer(parent);
-    barycentric_.transfer(bary);
+    weightStart_.transfer(start);
+    weightNode_.transfer(node);
+    weight_.transfer(weight);
     fraction_.transfer(fraction);
     points_.setSize(triangle_.size());
     normals_.setSize(triangle_.size());
@@ -182,10 +206,10 @@ void Foam::canopyMarkers::update
     {
         const label t = triangle_[m];
         point p(Zero);
-        for (int k = 0; k < 3; ++k)
+        for (label w = weightStart_[m]; w < weightStart_[m + 1]; ++w)
         {
-            const label i = triangleNodes_[t][k];
-            p += barycentric_[m][k]*point(x[3*i], x[3*i+1], x[3*i+2]);
+            const label i = weightNode_[w];
+            p += weight_[w]*point(x[3*i], x[3*i+1], x[3*i+2]);
         }
         points_[m] = p - origin;
         normals_[m] = vector(normal[3*t], normal[3*t+1], normal[3*t+2]);
@@ -305,10 +329,9 @@ Foam::tmp<Foam::vectorField> Foam::canopyMarkers::toNodes
     vectorField& result = tresult.ref();
     forAll(triangle_, m)
     {
-        const FixedList<label, 3>& nodes = triangleNodes_[triangle_[m]];
-        for (int k = 0; k < 3; ++k)
+        for (label w = weightStart_[m]; w < weightStart_[m + 1]; ++w)
         {
-            result[nodes[k]] += barycentric_[m][k]*markerForces[m];
+            result[weightNode_[w]] += weight_[w]*markerForces[m];
         }
     }
     return tresult;

@@ -7,6 +7,7 @@
 #include "treeDataCell.H"
 #include "indexedOctree.H"
 #include "canopyFoamCompat.H"
+#include "freeEdgeRetraction.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -90,8 +91,8 @@ Foam::wordList Foam::ibForcing::validKeys()
 {
     return
     {
-        "kernel", "markerSpacing", "markerSpacingCells", "iterations",
-        "tangential", "pressureOffset"
+        "kernel", "markerSpacing", "markerSpacingCells", "freeEdgeRetractionCells",
+        "iterations", "tangential", "pressureOffset"
     };
 }
 
@@ -151,6 +152,14 @@ Foam::ibForcing::ibForcing
             spacingCells_*Foam::cbrt(gMin(mesh.cellVolumes()))
         )
     ),
+    retractionCells_
+    (
+        forcing.nonNegative
+        (
+            "freeEdgeRetractionCells",
+            "free edges' retraction [local cell sizes]", 0
+        )
+    ),
     totalForce_(Zero),
     coarseMarkers_(0)
 {
@@ -170,23 +179,64 @@ Foam::ibForcing::ibForcing
     // The triangles' subdivision: a restart's own, else from the spacing
     labelList levels(restartLevels);
     const label nTriangles = structure.nTriangles();
+    const bool retract = retractionCells_ > 0;
+    const scalarField cellSizes
+    (
+        (retract || (levels.size() != nTriangles && !uniformSpacing_))
+      ? scalarField
+        (
+            localCellSizes
+            (
+                structure.triangleCentres(), spacing_/spacingCells_
+            )
+        )
+      : scalarField()
+    );
     if (levels.size() != nTriangles)
     {
         const scalarField triangleSpacing
         (
             uniformSpacing_
           ? scalarField(nTriangles, spacing_)
-          : scalarField
-            (
-                spacingCells_*localCellSizes
-                (
-                    structure.triangleCentres(), spacing_/spacingCells_
-                )
-            )
+          : scalarField(spacingCells_*cellSizes)
         );
         levels = canopyMarkers::levels(structure.model(), triangleSpacing);
     }
-    markers_.reset(new canopyMarkers(structure.model(), levels));
+
+    // The free edges' retraction: its band (twice the retraction) must
+    // lie within the cloth
+    autoPtr<freeEdgeRetraction> retraction;
+    if (retract)
+    {
+        retraction.reset
+        (
+            new freeEdgeRetraction
+            (
+                structure.model(), scalarField(retractionCells_*cellSizes)
+            )
+        );
+        if (2*retraction->largest() >= retraction->halfWidth())
+        {
+            forcing.fail
+            (
+                "freeEdgeRetractionCells",
+                "retracts the cloth's free edges by up to "
+              + Foam::name(retraction->largest())
+              + " m: the band of twice that reaches past the middle of "
+                "the cloth, whose nodes lie at most "
+              + Foam::name(retraction->halfWidth())
+              + " m from a free edge; give a smaller retraction"
+            );
+        }
+        Info<< "canopyCoupling: the free edges retracted by up to "
+            << retraction->largest() << " m: " << retraction->nMoved()
+            << " nodes seen moved in, " << retraction->nStopped()
+            << " of them stopped short at a ridge" << endl;
+    }
+    markers_.reset
+    (
+        new canopyMarkers(structure.model(), levels, retraction.get())
+    );
     velocityStencil_.reset(new ibStencil(mesh, kernel_()));
     plusStencil_.reset(new ibStencil(mesh, kernel_()));
     minusStencil_.reset(new ibStencil(mesh, kernel_()));
@@ -399,6 +449,11 @@ void Foam::ibForcing::writeInfo(Ostream& os) const
     os  << spacing_ << " m), kernel " << kernelName_ << ", "
         << forcingIterations_ << " forcing iterations, "
         << (noSlip_ ? "noSlip" : "free");
+    if (retractionCells_ > 0)
+    {
+        os  << ", free edges retracted by " << Foam::name(retractionCells_)
+            << " local cell";
+    }
 }
 
 
