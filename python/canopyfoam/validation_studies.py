@@ -1,8 +1,10 @@
 """validation_studies.py — the validation studies: each a name, a title and the runs it compares (validation_runs.py)."""
 
-from .validation_runs import (CROSSWIND_T10, FINE_CLOTH_SOURCE,
+from .validation_runs import (CROSSWIND_T10, DISC_LOW_RE_RUNS,
+                              DISC_RETRACTED_RUNS, FINE_CLOTH_SOURCE,
                               FINE_CLOTH_SPEED, FIRST_SOURCE, MAIN_JOB_RUN,
-                              SEVEN_TUTORIAL_80S, T10_FINE_SOURCE, TILT_ANGLES)
+                              SEVEN_RETRACTED_RUNS, SEVEN_TUTORIAL_80S,
+                              T10_FINE_SOURCE, TILT_ANGLES)
 
 STUDIES = [
     ("default7ft", "7 ft canopy: the main job (the tutorial's default)",
@@ -175,22 +177,20 @@ STUDIES = [
      "viscosity raised to 1.067 m^2/s, 5 m/s), on the tutorial's forcing "
      "at 8, 12 and 18 cells across D0, its edge retracted by 0 and 1 cell "
      "(serial, to 10 s, read over 7-10 s)",
-     ["disc-re10-cpd%d-retract%g" % (n, r) for r in (0, 1)
-      for n in (8, 12, 18)]),
+     [r.ident for r in DISC_LOW_RE_RUNS]),
     ("discRetracted7ft", "The disc of study discTutorial7ft (5 m/s in "
      "air, Re 7e5) with its free edge retracted by 1.1 cells (study "
      "discEdge7ft), at 12 and 18 cells across D0, its load the IB force's "
      "reaction and at 18 the air's sampled pressure, against the same "
      "without the retraction (to 20 s, read over 5-20 s)",
-     ["disc-markerhalf-cpd%d-retract1.1" % n for n in (12, 18)]
-     + ["disc-markerhalf-sampled-cpd18-retract1.1"]
+     [r.ident for r in DISC_RETRACTED_RUNS]
      + ["disc-markerhalf-cpd%d" % n for n in (12, 18)]
      + ["disc-markerhalf-sampled-cpd18"]),
     ("retraction7ft", "7 ft canopy on the guide wire, the tutorial as it "
      "is with its hem retracted by 1.1 cells (study discEdge7ft) against "
      "it as it is, at 12 and 18 cells across D0 (box 8 D0 wide; from rest "
      "to 40 s, read over 10-40 s)",
-     ["7ft-cpd%d-retract1.1-40s" % n for n in (12, 18)]
+     [r.ident for r in SEVEN_RETRACTED_RUNS[:2]]    # the 27-cell: not run
      + ["7ft-cpd%d-markerhalf-loss0.02-40s" % n for n in (12, 18)]),
     ("load7ftSampled", "7 ft canopy on the guide wire, the tutorial as it "
      "is at 12 cells across D0: the cloth's load the IB force's reaction "

@@ -1,7 +1,7 @@
 /*---------------------------------------------------------------------------*\
     canopyFoam: Test-canopyMarkers.C — verification of the canopy's IB
-    markers (canopyMarkers): the free edges' inset, exact placement and the
-    adjoint force split.
+    markers (canopyMarkers): the free edges' retraction, exact placement and
+    the adjoint force split.
 -------------------------------------------------------------------------------
 Application
     Test-canopyMarkers
@@ -182,7 +182,7 @@ int main(int argc, char *argv[])
         << nl;
 
     const canopyMarkers plain(rect, levels);
-    const freeEdgeRetraction none(rect, scalarField(nt, 0));
+    const freeEdgeRetraction none(rect, 0);
     const canopyMarkers zero(rect, levels, &none);
     check
     (
@@ -190,7 +190,7 @@ int main(int argc, char *argv[])
         max(mag(zero.points() - plain.points())), 0
     );
 
-    const freeEdgeRetraction retraction(rect, scalarField(nt, d));
+    const freeEdgeRetraction retraction(rect, d);
     Info<< "    " << retraction.nMoved() << " nodes moved, "
         << retraction.nStopped() << " stopped at the corners' ridges; "
         << "half-width " << retraction.halfWidth() << " m" << nl;
@@ -246,7 +246,7 @@ int main(int argc, char *argv[])
     const pointField xc(nodePositions(disc));
     const label ntc = canopy_model_triangle_count(disc);
     const scalar dc = 0.06;
-    const freeEdgeRetraction cr(disc, scalarField(ntc, dc));
+    const freeEdgeRetraction cr(disc, dc);
     label wrong = 0, hem = 0, vent = 0;
     scalar hemError = 0, sag = 0;
     forAll(xc, i)

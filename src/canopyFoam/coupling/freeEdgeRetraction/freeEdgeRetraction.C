@@ -9,13 +9,14 @@
 #include "DynamicList.H"
 #include "error.H"
 #include "Map.H"
+#include "scalarField.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::freeEdgeRetraction::freeEdgeRetraction
 (
     const canopy_model* model,
-    const scalarField& retraction
+    const scalar retraction
 )
 :
     viewNodes_(canopy_model_node_count(model)),
@@ -23,26 +24,21 @@ Foam::freeEdgeRetraction::freeEdgeRetraction
     nMoved_(0),
     nStopped_(0),
     halfWidth_(0),
-    largest_(0)
+    retraction_(0)
 {
     const label n = viewNodes_.size();
     const label nt = canopy_model_triangle_count(model);
     const label ns = canopy_model_spring_count(model);
-    if (retraction.size() != nt)
-    {
-        FatalErrorInFunction
-            << retraction.size() << " retractions for " << nt
-            << " canopy triangles" << exit(FatalError);
-    }
     forAll(viewNodes_, i)
     {
         viewNodes_[i] = labelList(1, i);
         viewWeights_[i] = scalarList(1, 1.0);
     }
-    if (!nt || max(retraction) <= 0)
+    if (!nt || !(retraction > 0))
     {
         return;
     }
+    retraction_ = retraction;
 
     List<int> tri(3*nt), ends(2*ns);
     List<double> restLength(ns);
@@ -90,7 +86,6 @@ Foam::freeEdgeRetraction::freeEdgeRetraction
         }
     }
     labelList row(n, -1);
-    scalarField d(n, 0), dCount(n, 0);
     for (label t = 0; t < nt; ++t)
     {
         for (int k = 0; k < 3; ++k)
@@ -99,18 +94,6 @@ Foam::freeEdgeRetraction::freeEdgeRetraction
             if (count[e] == 1)
             {
                 row[e.first()] = row[e.second()] = 0;
-            }
-        }
-    }
-    for (label t = 0; t < nt; ++t)
-    {
-        for (int k = 0; k < 3; ++k)
-        {
-            const label i = tri[3*t + k];
-            if (row[i] == 0)
-            {
-                d[i] += retraction[t];
-                dCount[i] += 1;
             }
         }
     }
@@ -205,15 +188,7 @@ Foam::freeEdgeRetraction::freeEdgeRetraction
         }
     }
 
-    // Distances from the edge and the retraction, row by row (row 0: the
-    // mean retraction of its triangles)
-    forAll(d, i)
-    {
-        if (row[i] == 0 && dCount[i] > 0)
-        {
-            d[i] /= dCount[i];
-        }
-    }
+    // Distances from the edge, row by row
     scalarField rho(n, 0);
     const label lastRow = max(row);
     for (label r = 1; r <= lastRow; ++r)
@@ -224,19 +199,17 @@ Foam::freeEdgeRetraction::freeEdgeRetraction
             {
                 continue;
             }
-            scalar sumRho = 0, sumD = 0;
+            scalar sumRho = 0;
             label nPrev = 0;
             for (const label j : near[i])
             {
                 if (row[j] == r - 1)
                 {
                     sumRho += rho[j] + H[j];
-                    sumD += d[j];
                     ++nPrev;
                 }
             }
             rho[i] = sumRho/nPrev;
-            d[i] = sumD/nPrev;
         }
     }
 
@@ -255,12 +228,11 @@ Foam::freeEdgeRetraction::freeEdgeRetraction
         {
             continue;
         }
-        scalar remaining = d[i] - 0.5*rho[i];
+        scalar remaining = retraction - 0.5*rho[i];
         if (!(remaining > 0))
         {
             continue;
         }
-        largest_ = max(largest_, d[i]);
         Map<scalar> w;
         w.insert(i, 1.0);
         while (remaining > 0)

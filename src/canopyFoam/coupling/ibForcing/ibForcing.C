@@ -91,8 +91,9 @@ Foam::wordList Foam::ibForcing::validKeys()
 {
     return
     {
-        "kernel", "markerSpacing", "markerSpacingCells", "freeEdgeRetractionCells",
-        "iterations", "tangential", "pressureOffset"
+        "kernel", "markerSpacing", "markerSpacingCells",
+        "freeEdgeRetractionCells", "iterations", "tangential",
+        "pressureOffset"
     };
 }
 
@@ -157,7 +158,7 @@ Foam::ibForcing::ibForcing
         forcing.nonNegative
         (
             "freeEdgeRetractionCells",
-            "free edges' retraction [local cell sizes]", 0
+            "free edges' retraction [finest cell sizes]", 0
         )
     ),
     totalForce_(Zero),
@@ -179,57 +180,53 @@ Foam::ibForcing::ibForcing
     // The triangles' subdivision: a restart's own, else from the spacing
     labelList levels(restartLevels);
     const label nTriangles = structure.nTriangles();
-    const bool retract = retractionCells_ > 0;
-    const scalarField cellSizes
-    (
-        (retract || (levels.size() != nTriangles && !uniformSpacing_))
-      ? scalarField
-        (
-            localCellSizes
-            (
-                structure.triangleCentres(), spacing_/spacingCells_
-            )
-        )
-      : scalarField()
-    );
     if (levels.size() != nTriangles)
     {
         const scalarField triangleSpacing
         (
             uniformSpacing_
           ? scalarField(nTriangles, spacing_)
-          : scalarField(spacingCells_*cellSizes)
+          : scalarField
+            (
+                spacingCells_*localCellSizes
+                (
+                    structure.triangleCentres(), spacing_/spacingCells_
+                )
+            )
         );
         levels = canopyMarkers::levels(structure.model(), triangleSpacing);
     }
 
-    // The free edges' retraction: its band (twice the retraction) must
-    // lie within the cloth
+    // The free edges' retraction, in the finest cell's size (the canopy
+    // lies in the finest level; one fixed length, so that a restart
+    // retracts as the run did); its band (twice the retraction) must lie
+    // within the cloth
     autoPtr<freeEdgeRetraction> retraction;
-    if (retract)
+    if (retractionCells_ > 0)
     {
         retraction.reset
         (
             new freeEdgeRetraction
             (
-                structure.model(), scalarField(retractionCells_*cellSizes)
+                structure.model(),
+                retractionCells_*Foam::cbrt(gMin(mesh.cellVolumes()))
             )
         );
-        if (2*retraction->largest() >= retraction->halfWidth())
+        if (2*retraction->retraction() >= retraction->halfWidth())
         {
             forcing.fail
             (
                 "freeEdgeRetractionCells",
-                "retracts the cloth's free edges by up to "
-              + Foam::name(retraction->largest())
+                "retracts the cloth's free edges by "
+              + Foam::name(retraction->retraction())
               + " m: the band of twice that reaches past the middle of "
                 "the cloth, whose nodes lie at most "
               + Foam::name(retraction->halfWidth())
               + " m from a free edge; give a smaller retraction"
             );
         }
-        Info<< "canopyCoupling: the free edges retracted by up to "
-            << retraction->largest() << " m: " << retraction->nMoved()
+        Info<< "canopyCoupling: the free edges retracted by "
+            << retraction->retraction() << " m: " << retraction->nMoved()
             << " nodes seen moved in, " << retraction->nStopped()
             << " of them stopped short at a ridge" << endl;
     }
@@ -452,7 +449,7 @@ void Foam::ibForcing::writeInfo(Ostream& os) const
     if (retractionCells_ > 0)
     {
         os  << ", free edges retracted by " << Foam::name(retractionCells_)
-            << " local cell";
+            << " finest cell";
     }
 }
 
