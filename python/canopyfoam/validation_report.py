@@ -23,7 +23,7 @@ from .validation_tables import (BREATHING_STUDIES, CONVERGED_WINDOWS,
                                 cross_resolution_lines, cross_starts_lines,
                                 disc_les_lines, disc_lines, disc_table,
                                 disc_tutorial_lines, disc_edge_lines,
-                                disc_ring_lines,
+                                disc_ring_lines, disc_wake_lines,
                                 edge_against_cells_lines, edge_study_lines,
                                 fabric_edge_cells, flat_circular_handbook,
                                 forced_turn_lines, forced_turn_notes,
@@ -909,6 +909,8 @@ def write_report():
             md += disc_edge_lines(results)
         if name == "discRetracted7ft":
             md += disc_ring_lines(results)
+        if name == "discWake7ft":
+            md += disc_wake_lines(results)
         if name == "wrinkling7ft":
             md += gci_lines([(run, rec) for run, rec in results
                              if run.ident in ("7ft-compression0",

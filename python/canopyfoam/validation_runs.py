@@ -2684,18 +2684,110 @@ DISC_RETRACTED_RUNS = [
                                    "{ type sampled; }")],
         steady_start=5, steady_end=20)]
 RUNS += DISC_RETRACTED_RUNS
+# ... and the same disc at a small incidence (the stream 2 degrees off its
+# axis, in the x-z plane). From a symmetric start on its axis the disc's
+# wake stays axisymmetric until 12-16 s (its side force below 0.1 N) and
+# then sheds, its drag rising by a fifth; the tilt breaks that symmetry
+# from the start (at 12 cells across D0). The drag along the stream
+# differs from the force along the axis by under 0.1 % at 2 degrees (cos
+# 2 deg = 0.9994; the side force's share sin 2 deg). Each run, tilted or
+# not, goes on from its 20 s write to 40 s, read over 20-40 s.
+DISC_TILT = 2.0
+DISC_TILTED = [(e[0], e[1], "uniform (%.6g 0 %.6g)" % (
+    DISC_SPEED * math.sin(math.radians(DISC_TILT)),
+    DISC_SPEED * math.cos(math.radians(DISC_TILT))))
+    if e[2] == STREAM else e for e in DISC]
+DISC_TILTED_RUNS = [
+    Run("disc-markerhalf-cpd%d-retract%g-tilt%g" % (n, EDGE_RETRACTION,
+                                                    DISC_TILT), SEVEN,
+        "rigid impermeable disc of D0 in a 5 m/s stream %g deg off its "
+        "axis, the tutorial's forcing with the free edge retracted by %g "
+        "cell, box 8 D0 wide, %d cells across D0, to 20 s; interval 5-20 s"
+        % (DISC_TILT, EDGE_RETRACTION, n),
+        ["-cellsPerDiameter", "%d" % n] + DISC_REPORT,
+        DISC_TILTED + TO_20 + RETRACT, steady_start=5, steady_end=20)
+    for n in (12,)]
+RUNS += DISC_TILTED_RUNS
+
+
+def disc_to_40s(source):
+    """Disc run `source` (to 20 s, read over 5-20 s) going on from its 20 s
+    write to 40 s, read over 20-40 s."""
+    edits = [e for e in source.edits if e[1] != "endTime"]
+    return Run(source.ident + "-40s", SEVEN,
+               source.label.replace("to 20 s; interval 5-20 s", "to 40 s "
+                                    "going on from %s at 20 s; interval "
+                                    "20-40 s" % source.ident),
+               source.options,
+               edits=edits + [("system/controlDict", "endTime", "40")],
+               steady_start=20, steady_end=40, extends=source.ident)
+
+
+DISC_RETRACTED_40S_RUNS = [disc_to_40s(r) for r in
+                           DISC_RETRACTED_RUNS + DISC_TILTED_RUNS]
+RUNS += DISC_RETRACTED_40S_RUNS
+# ... and the same retracted disc with the WALE LES and LUST convection
+# (study discLES7ft's model) from rest to 40 s, read over 20-40 s, after
+# the wake has left its symmetric start
+DISC_LES_RETRACTED_RUNS = [
+    Run("disc-LES-cpd%d-retract%g-40s" % (n, EDGE_RETRACTION), SEVEN,
+        "rigid impermeable disc of D0 in a 5 m/s stream, LES (WALE, LUST "
+        "convection), the tutorial's forcing with the free edge retracted "
+        "by %g cell, box 8 D0 wide, %d cells across D0, to 40 s; interval "
+        "20-40 s" % (EDGE_RETRACTION, n),
+        ["-cellsPerDiameter", "%d" % n] + DISC_REPORT,
+        DISC + LES + RETRACT + [("system/controlDict", "endTime", "40")],
+        steady_start=20, steady_end=40)
+    for n in (12, 18)]
+RUNS += DISC_LES_RETRACTED_RUNS
+# ... and the disc without the retraction (study discTutorial7ft's) from
+# rest to 40 s, read over 20-40 s, after its wake sheds
+DISC_TUTORIAL_40S_RUNS = [
+    Run("disc-markerhalf-cpd%d-40s" % n, SEVEN, "rigid impermeable disc of "
+        "D0 in a 5 m/s stream, the tutorial's forcing (the markers half a "
+        "cell apart), box 8 D0 wide, %d cells across D0, to 40 s; interval "
+        "20-40 s" % n, ["-cellsPerDiameter", "%d" % n] + DISC_REPORT,
+        DISC + [("system/controlDict", "endTime", "40")],
+        steady_start=20, steady_end=40)
+    for n in (12, 18)]
+RUNS += DISC_TUTORIAL_40S_RUNS
 # ... and on the 7 ft canopy, the tutorial as it is otherwise, from rest to
-# 40 s, read over 10-40 s, against 7ft-cpd12/18-markerhalf-loss0.02-40s
+# 40 s, read over 10-40 s, against 7ft-cpd12/18-markerhalf-loss0.02-40s;
+# the 27-cell level first to 20 s (about 1.9 hours on 2 ranks), read over
+# 10-20 s beside the others' descent series over the same window, then
+# going on from its 20 s write to 40 s
+SEVEN_RETRACTED_27_20S = Run(
+    "7ft-cpd27-retract%g-20s" % EDGE_RETRACTION, SEVEN, "box 8 D0 wide, 27 "
+    "cells across D0, the tutorial as it is with the hem retracted by %g "
+    "cell, to 20 s; interval 10-20 s" % EDGE_RETRACTION,
+    ["-cellsPerDiameter", "27", "-steadyStart", "10"],
+    edits=RETRACT + [("system/controlDict", "endTime", "20")],
+    reference="7ft", steady_start=10, steady_end=20)
+RUNS.append(SEVEN_RETRACTED_27_20S)
 SEVEN_RETRACTED_RUNS = [
     Run("7ft-cpd%d-retract%g-40s" % (n, EDGE_RETRACTION), SEVEN, "box 8 D0 "
         "wide, %d cells across D0, the tutorial as it is with the hem "
-        "retracted by %g cell, to 40 s; interval 10-40 s"
-        % (n, EDGE_RETRACTION), ["-cellsPerDiameter", "%d" % n,
-                                 "-steadyStart", "10"],
+        "retracted by %g cell, to 40 s%s; interval 10-40 s"
+        % (n, EDGE_RETRACTION, " going on from %s at 20 s"
+           % SEVEN_RETRACTED_27_20S.ident if n == 27 else ""),
+        ["-cellsPerDiameter", "%d" % n, "-steadyStart", "10"],
         edits=RETRACT + [("system/controlDict", "endTime", "40")],
-        reference="7ft", steady_start=10, steady_end=40)
-    for n in (12, 18, 27)]      # 27: about 3.5 hours on 2 ranks, in parts
+        reference="7ft", steady_start=10, steady_end=40,
+        extends=SEVEN_RETRACTED_27_20S.ident if n == 27 else None)
+    for n in (12, 18, 27)]
 RUNS += SEVEN_RETRACTED_RUNS
+# ... and the 12-cell level with the WALE LES and LUST convection (the
+# retracted disc's drag with them: study discWake7ft)
+SEVEN_RETRACTED_LES_RUNS = [
+    Run("7ft-cpd%d-retract%g-LES-40s" % (n, EDGE_RETRACTION), SEVEN, "box 8 "
+        "D0 wide, %d cells across D0, the tutorial as it is with the hem "
+        "retracted by %g cell, LES (WALE, LUST convection), to 40 s; "
+        "interval 10-40 s" % (n, EDGE_RETRACTION),
+        ["-cellsPerDiameter", "%d" % n, "-steadyStart", "10"],
+        edits=RETRACT + LES + [("system/controlDict", "endTime", "40")],
+        reference="7ft", steady_start=10, steady_end=40)
+    for n in (12,)]
+RUNS += SEVEN_RETRACTED_LES_RUNS
 # The 7 ft tutorial with the air's pressure as the cloth's load: on the
 # rigid disc the IB force's reaction (the tutorial's load) and the air's
 # pressure sampled 3 cells off each side agree within 4 % inside the rim

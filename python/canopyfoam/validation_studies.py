@@ -186,12 +186,36 @@ STUDIES = [
      [r.ident for r in DISC_RETRACTED_RUNS]
      + ["disc-markerhalf-cpd%d" % n for n in (12, 18)]
      + ["disc-markerhalf-sampled-cpd18"]),
+    ("discWake7ft", "The disc of study discRetracted7ft (its free edge "
+     "retracted by 1.1 cells, 5 m/s in air) after its wake leaves the "
+     "symmetric start: to 20 s read over 5-20 s against going on to 40 s "
+     "read over 20-40 s, on its axis and with the stream 2 degrees off it "
+     "(12 cells across D0), laminar and LES (WALE, LUST convection), at 12 "
+     "and 18 cells across D0, and the disc without the retraction from "
+     "rest to 40 s",
+     ["disc-markerhalf-cpd12-retract1.1",
+      "disc-markerhalf-cpd12-retract1.1-40s",
+      "disc-markerhalf-cpd12-retract1.1-tilt2",
+      "disc-markerhalf-cpd12-retract1.1-tilt2-40s",
+      "disc-LES-cpd12-retract1.1-40s",
+      "disc-markerhalf-cpd18-retract1.1",
+      "disc-markerhalf-cpd18-retract1.1-40s",
+      "disc-LES-cpd18-retract1.1-40s",
+      "disc-markerhalf-sampled-cpd18-retract1.1",
+      "disc-markerhalf-sampled-cpd18-retract1.1-40s",
+      "disc-markerhalf-cpd12-40s", "disc-markerhalf-cpd18-40s"]),
     ("retraction7ft", "7 ft canopy on the guide wire, the tutorial as it "
      "is with its hem retracted by 1.1 cells (study discEdge7ft) against "
      "it as it is, at 12 and 18 cells across D0 (box 8 D0 wide; from rest "
      "to 40 s, read over 10-40 s)",
      [r.ident for r in SEVEN_RETRACTED_RUNS[:2]]    # the 27-cell: not run
      + ["7ft-cpd%d-markerhalf-loss0.02-40s" % n for n in (12, 18)]),
+    ("retraction7ftLES", "7 ft canopy on the guide wire, the tutorial as "
+     "it is with its hem retracted by 1.1 cells: laminar against LES "
+     "(WALE, LUST convection; the retracted disc's drag with them: study "
+     "discWake7ft) at 12 cells across D0 (box 8 D0 wide; from rest to 40 "
+     "s, read over 10-40 s)",
+     ["7ft-cpd12-retract1.1-40s", "7ft-cpd12-retract1.1-LES-40s"]),
     ("load7ftSampled", "7 ft canopy on the guide wire, the tutorial as it "
      "is at 12 cells across D0: the cloth's load the IB force's reaction "
      "taken from the cells (the tutorial's) against the air's pressure "
