@@ -1421,18 +1421,25 @@ RUNS += SEVEN_TUTORIAL_VARIANTS
 SEVEN_CELLS_15S_RUNS |= {r.ident for r in SEVEN_TUTORIAL_VARIANTS}
 
 
+def going_on(source, ident, label, end, steady_start):
+    """Run `ident` (labelled `label`): run `source` going on from its
+    latest write to `end` [s], its edits with that endTime, read over
+    steady_start to end."""
+    edits = [e for e in source.edits if e[1] != "endTime"]
+    return Run(ident, source.tutorial, label, source.options,
+               edits=edits + [("system/controlDict", "endTime", "%g" % end)],
+               reference=source.reference, steady_start=steady_start,
+               steady_end=end, extends=source.ident)
+
+
 def seven_tutorial_80s(source):
     """Run `source` (a 7 ft run from rest to 40 s, read over 10-40 s)
     going on from its 40 s write to 80 s, read over 40-80 s."""
-    edits = [e for e in source.edits if e[1] != "endTime"]
-    return Run(source.ident.replace("-40s", "-80s"), SEVEN,
-               source.label.replace("to 40 s; interval 10-40 s", "to 80 s "
-                                    "going on from %s at 40 s; interval "
-                                    "40-80 s" % source.ident),
-               source.options,
-               edits=edits + [("system/controlDict", "endTime", "80")],
-               reference="7ft", steady_start=40, steady_end=80,
-               extends=source.ident)
+    return going_on(source, source.ident.replace("-40s", "-80s"),
+                    source.label.replace("to 40 s; interval 10-40 s",
+                                         "to 80 s going on from %s at 40 s; "
+                                         "interval 40-80 s" % source.ident),
+                    80, 40)
 
 
 # The tutorial's three cloths (edge 1.25, 0.83 and 0.56 finest cells at
@@ -2099,12 +2106,18 @@ RUNS += [
 # 30 s (19 D0/V), read over 15-30 s
 
 
+def tilted_velocity(speed, alpha):
+    """A uniform velocity of speed [m/s] at alpha [degrees] from the axis
+    (+z), across it along +x, as a field value."""
+    a = math.radians(alpha)
+    return "uniform (%.6g 0 %.6g)" % (speed * math.sin(a),
+                                      speed * math.cos(a))
+
+
 def tilted_stream(speed, alpha):
     """Edits that hold the case's canopy still in a stream of speed [m/s]
     at alpha [degrees] from the axis (+z), across it along +x."""
-    a = math.radians(alpha)
-    stream = "uniform (%.6g 0 %.6g)" % (speed * math.sin(a),
-                                        speed * math.cos(a))
+    stream = tilted_velocity(speed, alpha)
     return [(PROPS, "fixedNodes", "{ all true; }"),
             (PROPS, "coupling/frame", "{ type fixed; }"),
             (PROPS, "initialState", '"%s"' % REST_STATE),
@@ -2693,10 +2706,9 @@ RUNS += DISC_RETRACTED_RUNS
 # 2 deg = 0.9994; the side force's share sin 2 deg). Each run, tilted or
 # not, goes on from its 20 s write to 40 s, read over 20-40 s.
 DISC_TILT = 2.0
-DISC_TILTED = [(e[0], e[1], "uniform (%.6g 0 %.6g)" % (
-    DISC_SPEED * math.sin(math.radians(DISC_TILT)),
-    DISC_SPEED * math.cos(math.radians(DISC_TILT))))
-    if e[2] == STREAM else e for e in DISC]
+DISC_TILTED = [(path, entry, tilted_velocity(DISC_SPEED, DISC_TILT))
+               if value == STREAM else (path, entry, value)
+               for path, entry, value in DISC]
 DISC_TILTED_RUNS = [
     Run("disc-markerhalf-cpd%d-retract%g-tilt%g" % (n, EDGE_RETRACTION,
                                                     DISC_TILT), SEVEN,
@@ -2713,14 +2725,11 @@ RUNS += DISC_TILTED_RUNS
 def disc_to_40s(source):
     """Disc run `source` (to 20 s, read over 5-20 s) going on from its 20 s
     write to 40 s, read over 20-40 s."""
-    edits = [e for e in source.edits if e[1] != "endTime"]
-    return Run(source.ident + "-40s", SEVEN,
-               source.label.replace("to 20 s; interval 5-20 s", "to 40 s "
-                                    "going on from %s at 20 s; interval "
-                                    "20-40 s" % source.ident),
-               source.options,
-               edits=edits + [("system/controlDict", "endTime", "40")],
-               steady_start=20, steady_end=40, extends=source.ident)
+    return going_on(source, source.ident + "-40s",
+                    source.label.replace("to 20 s; interval 5-20 s",
+                                         "to 40 s going on from %s at 20 s; "
+                                         "interval 20-40 s" % source.ident),
+                    40, 20)
 
 
 DISC_RETRACTED_40S_RUNS = [disc_to_40s(r) for r in
@@ -2753,9 +2762,8 @@ DISC_TUTORIAL_40S_RUNS = [
 RUNS += DISC_TUTORIAL_40S_RUNS
 # ... and on the 7 ft canopy, the tutorial as it is otherwise, from rest to
 # 40 s, read over 10-40 s, against 7ft-cpd12/18-markerhalf-loss0.02-40s;
-# the 27-cell level first to 20 s (about 1.9 hours on 2 ranks), read over
-# 10-20 s beside the others' descent series over the same window, then
-# going on from its 20 s write to 40 s
+# the 27-cell level in two parts, from rest to 20 s (about 1.9 hours on 2
+# ranks), read over 10-20 s, then going on from its 20 s write to 40 s
 SEVEN_RETRACTED_27_20S = Run(
     "7ft-cpd27-retract%g-20s" % EDGE_RETRACTION, SEVEN, "box 8 D0 wide, 27 "
     "cells across D0, the tutorial as it is with the hem retracted by %g "

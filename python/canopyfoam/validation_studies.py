@@ -1,8 +1,11 @@
 """validation_studies.py — the validation studies: each a name, a title and the runs it compares (validation_runs.py)."""
 
-from .validation_runs import (CROSSWIND_T10, DISC_LOW_RE_RUNS,
-                              DISC_RETRACTED_RUNS, FINE_CLOTH_SOURCE,
+from .validation_runs import (CROSSWIND_T10, DISC_LES_RETRACTED_RUNS,
+                              DISC_LOW_RE_RUNS, DISC_RETRACTED_40S_RUNS,
+                              DISC_RETRACTED_RUNS, DISC_TILTED_RUNS,
+                              DISC_TUTORIAL_40S_RUNS, FINE_CLOTH_SOURCE,
                               FINE_CLOTH_SPEED, FIRST_SOURCE, MAIN_JOB_RUN,
+                              SEVEN_RETRACTED_LES_RUNS,
                               SEVEN_RETRACTED_RUNS, SEVEN_TUTORIAL_80S,
                               T10_FINE_SOURCE, TILT_ANGLES)
 
@@ -193,17 +196,10 @@ STUDIES = [
      "(12 cells across D0), laminar and LES (WALE, LUST convection), at 12 "
      "and 18 cells across D0, and the disc without the retraction from "
      "rest to 40 s",
-     ["disc-markerhalf-cpd12-retract1.1",
-      "disc-markerhalf-cpd12-retract1.1-40s",
-      "disc-markerhalf-cpd12-retract1.1-tilt2",
-      "disc-markerhalf-cpd12-retract1.1-tilt2-40s",
-      "disc-LES-cpd12-retract1.1-40s",
-      "disc-markerhalf-cpd18-retract1.1",
-      "disc-markerhalf-cpd18-retract1.1-40s",
-      "disc-LES-cpd18-retract1.1-40s",
-      "disc-markerhalf-sampled-cpd18-retract1.1",
-      "disc-markerhalf-sampled-cpd18-retract1.1-40s",
-      "disc-markerhalf-cpd12-40s", "disc-markerhalf-cpd18-40s"]),
+     [r.ident for source, extended in zip(
+         DISC_RETRACTED_RUNS + DISC_TILTED_RUNS, DISC_RETRACTED_40S_RUNS)
+      for r in (source, extended)]
+     + [r.ident for r in DISC_LES_RETRACTED_RUNS + DISC_TUTORIAL_40S_RUNS]),
     ("retraction7ft", "7 ft canopy on the guide wire, the tutorial as it "
      "is with its hem retracted by 1.1 cells (study discEdge7ft) against "
      "it as it is, at 12 and 18 cells across D0 (box 8 D0 wide; from rest "
@@ -215,7 +211,8 @@ STUDIES = [
      "(WALE, LUST convection; the retracted disc's drag with them: study "
      "discWake7ft) at 12 cells across D0 (box 8 D0 wide; from rest to 40 "
      "s, read over 10-40 s)",
-     ["7ft-cpd12-retract1.1-40s", "7ft-cpd12-retract1.1-LES-40s"]),
+     [SEVEN_RETRACTED_RUNS[0].ident]
+     + [r.ident for r in SEVEN_RETRACTED_LES_RUNS]),
     ("load7ftSampled", "7 ft canopy on the guide wire, the tutorial as it "
      "is at 12 cells across D0: the cloth's load the IB force's reaction "
      "taken from the cells (the tutorial's) against the air's pressure "

@@ -23,9 +23,8 @@ from canopyfoam.validation_tables import (disc_reference_force,
 def run(ident, stream=None):
     edits = [] if stream is None else [("0.orig/U", "internalField",
                                         "uniform (%r %r %r)" % stream)]
-    r = Run(ident, SEVEN, "test disc", [], edits, steady_start=20,
-            steady_end=40)
-    return r
+    return Run(ident, SEVEN, "test disc", [], edits, steady_start=20,
+               steady_end=40)
 
 
 def record(force):
